@@ -1,0 +1,12 @@
+# Warnings as errors for the project's own targets, and the optional sanitizer build.
+set(LCMTF_SANITIZE "" CACHE STRING "Sanitizers for every target, e.g. address,undefined or thread")
+
+if(LCMTF_SANITIZE)
+  add_compile_options(-fsanitize=${LCMTF_SANITIZE} -fno-omit-frame-pointer -fno-sanitize-recover=all)
+  add_link_options(-fsanitize=${LCMTF_SANITIZE})
+endif()
+
+function(lcmtf_strict_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+    -Wno-sign-conversion -Wnon-virtual-dtor -Wold-style-cast -Werror)
+endfunction()

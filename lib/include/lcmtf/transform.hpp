@@ -1,0 +1,56 @@
+#pragma once
+
+#include <Eigen/Geometry>
+
+namespace lcmtf {
+
+/// A rigid transform parent_T_child: rotation (unit quaternion) then translation.
+/// Compose so the frame names cancel: a_T_c = a_T_b * b_T_c.
+struct Transform {
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+
+  Transform() = default;
+  Transform(const Eigen::Vector3d& translation_in, const Eigen::Quaterniond& rotation_in)
+      : translation(translation_in), rotation(rotation_in) {}
+
+  static Transform identity() { return Transform(); }
+
+  /// child_T_parent from parent_T_child.
+  Transform inverse() const {
+    const Eigen::Quaterniond inverse_rotation = rotation.conjugate();
+    return Transform(-(inverse_rotation * translation), inverse_rotation);
+  }
+
+  /// A point given in the child frame, expressed in the parent frame.
+  Eigen::Vector3d operator*(const Eigen::Vector3d& point) const {
+    return rotation * point + translation;
+  }
+
+  /// A direction given in the child frame, expressed in the parent frame (rotation only).
+  Eigen::Vector3d rotate(const Eigen::Vector3d& vector) const { return rotation * vector; }
+
+  Transform operator*(const Transform& child_T_grandchild) const {
+    return Transform(rotation * child_T_grandchild.translation + translation,
+                     rotation * child_T_grandchild.rotation);
+  }
+
+  Eigen::Isometry3d toIsometry() const;
+  /// Takes the rotation part as orthonormal and renormalizes the resulting quaternion.
+  static Transform fromIsometry(const Eigen::Isometry3d& isometry);
+
+  /// True when translations differ by at most `tolerance` metres and rotations by at most
+  /// `tolerance` radians (q and -q are the same rotation).
+  bool isApprox(const Transform& other, double tolerance = 1e-12) const;
+};
+
+/// Shortest-arc spherical interpolation: `a` at ratio 0, `b` (or -b) at ratio 1, unit length between.
+Eigen::Quaterniond slerp(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b, double ratio);
+
+/// Linear interpolation of translation and slerp of rotation; exact at ratio 0 and 1.
+Transform interpolate(const Transform& a, const Transform& b, double ratio);
+
+/// The angle in radians of the rotation taking `a` to `b`, in [0, pi].
+double angularDistance(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b);
+
+}  // namespace lcmtf

@@ -1,0 +1,47 @@
+#include "lcmtf/message_conversions.hpp"
+
+namespace lcmtf {
+
+vector3_t toMessage(const Eigen::Vector3d& vector) {
+  vector3_t message;
+  message.x = vector.x();
+  message.y = vector.y();
+  message.z = vector.z();
+  return message;
+}
+
+quaternion_t toMessage(const Eigen::Quaterniond& rotation) {
+  quaternion_t message;
+  message.x = rotation.x();
+  message.y = rotation.y();
+  message.z = rotation.z();
+  message.w = rotation.w();
+  return message;
+}
+
+transform_t toMessage(const TransformStamped& transform) {
+  transform_t message;
+  message.utime = toUtime(transform.stamp);
+  message.parent_frame = transform.parent_frame;
+  message.child_frame = transform.child_frame;
+  message.translation = toMessage(transform.transform.translation);
+  message.rotation = toMessage(transform.transform.rotation);
+  return message;
+}
+
+Eigen::Vector3d fromMessage(const vector3_t& vector) {
+  return Eigen::Vector3d(vector.x, vector.y, vector.z);
+}
+
+Eigen::Quaterniond fromMessage(const quaternion_t& rotation) {
+  return Eigen::Quaterniond(rotation.w, rotation.x, rotation.y, rotation.z);
+}
+
+TransformStamped fromMessage(const transform_t& transform) {
+  return TransformStamped{fromUtime(transform.utime), transform.parent_frame,
+                          transform.child_frame,
+                          Transform(fromMessage(transform.translation),
+                                    fromMessage(transform.rotation))};
+}
+
+}  // namespace lcmtf

@@ -1,0 +1,255 @@
+#include "lcmtf/wire_decode.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <limits>
+#include <string>
+
+namespace lcmtf {
+namespace {
+
+constexpr std::size_t kUnbounded = std::numeric_limits<std::size_t>::max();
+constexpr std::size_t kVector3Bytes = 3 * 8;
+constexpr std::size_t kQuaternionBytes = 4 * 8;
+constexpr std::size_t kShortestString = 4 + 1;
+constexpr std::size_t kShortestTransform =
+    8 + 2 * kShortestString + kVector3Bytes + kQuaternionBytes;
+
+// Walks LCM's encoding of a message without building it, checking every length and count
+// against the bytes that are really there and against the limits.
+class WireSkimmer {
+ public:
+  WireSkimmer(const std::uint8_t* data, std::size_t size, const DecodeLimits& limits)
+      : data_(data), size_(size), limits_(limits) {}
+
+  const std::string& error() const { return error_; }
+  std::size_t remaining() const { return size_ - position_; }
+  const DecodeLimits& limits() const { return limits_; }
+
+  void enterElement(const char* array, std::size_t index) {
+    array_ = array;
+    index_ = index;
+  }
+  void leaveElement() { array_ = nullptr; }
+
+  bool fail(const char* field, const std::string& what) {
+    if (error_.empty()) {
+      error_ = array_ ? std::string(array_) + "[" + std::to_string(index_) + "]." : std::string();
+      error_ += std::string(field) + ": " + what;
+    }
+    return false;
+  }
+
+  bool skip(std::size_t bytes, const char* field) {
+    if (bytes > remaining()) {
+      return fail(field, "truncated: needs " + std::to_string(bytes) + " bytes, " +
+                             std::to_string(remaining()) + " remain");
+    }
+    position_ += bytes;
+    return true;
+  }
+
+  bool readInt32(std::int32_t& value, const char* field) {
+    if (remaining() < 4) return skip(4, field);
+    const std::uint8_t* p = data_ + position_;
+    value = static_cast<std::int32_t>((std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) |
+                                      (std::uint32_t{p[2]} << 8) | std::uint32_t{p[3]});
+    position_ += 4;
+    return true;
+  }
+
+  bool readInt64(std::int64_t& value, const char* field) {
+    if (remaining() < 8) return skip(8, field);
+    std::uint64_t bits = 0;
+    for (int i = 0; i < 8; ++i) bits = (bits << 8) | data_[position_ + static_cast<std::size_t>(i)];
+    value = static_cast<std::int64_t>(bits);
+    position_ += 8;
+    return true;
+  }
+
+  bool skipString(const char* field, std::size_t max_bytes) {
+    std::int32_t length_with_nul = 0;
+    if (!readInt32(length_with_nul, field)) return false;
+    if (length_with_nul < 1) {
+      return fail(field, "string length field is " + std::to_string(length_with_nul) +
+                             " (at least 1 for the terminating NUL)");
+    }
+    const auto length = static_cast<std::size_t>(length_with_nul) - 1;
+    if (length > max_bytes) {
+      return fail(field, "string of " + std::to_string(length) + " bytes exceeds the limit of " +
+                             std::to_string(max_bytes) + " bytes");
+    }
+    if (static_cast<std::size_t>(length_with_nul) > remaining()) {
+      return skip(static_cast<std::size_t>(length_with_nul), field);
+    }
+    const std::uint8_t* text = data_ + position_;
+    if (text[length] != 0) return fail(field, "string is not NUL-terminated");
+    if (std::memchr(text, 0, length) != nullptr) return fail(field, "string contains a NUL byte");
+    position_ += static_cast<std::size_t>(length_with_nul);
+    return true;
+  }
+
+  bool skipName(const char* field) { return skipString(field, limits_.max_name_bytes); }
+
+  // Reads an array length and checks that the bytes left could hold that many elements.
+  bool readCount(std::int32_t& count, const char* field, std::size_t shortest_element_bytes) {
+    if (!readInt32(count, field)) return false;
+    if (count < 0) return fail(field, "negative count " + std::to_string(count));
+    const auto elements = static_cast<std::size_t>(count);
+    if (elements > limits_.max_array_elements) {
+      return fail(field, "count " + std::to_string(count) + " exceeds the limit of " +
+                             std::to_string(limits_.max_array_elements));
+    }
+    if (elements > remaining() / shortest_element_bytes) {
+      return fail(field, "count " + std::to_string(count) + " needs at least " +
+                             std::to_string(elements * shortest_element_bytes) + " bytes, " +
+                             std::to_string(remaining()) + " remain");
+    }
+    return true;
+  }
+
+ private:
+  const std::uint8_t* data_;
+  std::size_t size_;
+  std::size_t position_ = 0;
+  const DecodeLimits& limits_;
+  std::string error_;
+  const char* array_ = nullptr;
+  std::size_t index_ = 0;
+};
+
+bool skimTransform(WireSkimmer& wire) {
+  return wire.skip(8, "utime") && wire.skipName("parent_frame") && wire.skipName("child_frame") &&
+         wire.skip(kVector3Bytes, "translation") && wire.skip(kQuaternionBytes, "rotation");
+}
+
+bool skimBody(WireSkimmer& wire, const transform_t*) { return skimTransform(wire); }
+
+bool skimBody(WireSkimmer& wire, const tf_message_t*) {
+  std::int32_t count = 0;
+  if (!(wire.skip(8, "utime") && wire.skipName("authority") &&
+        wire.readCount(count, "num_transforms", kShortestTransform))) {
+    return false;
+  }
+  for (std::int32_t i = 0; i < count; ++i) {
+    wire.enterElement("transforms", static_cast<std::size_t>(i));
+    if (!skimTransform(wire)) return false;
+  }
+  wire.leaveElement();
+  return true;
+}
+
+bool skimDoubles(WireSkimmer& wire, const char* count_field, const char* values_field) {
+  std::int32_t count = 0;
+  return wire.readCount(count, count_field, 8) &&
+         wire.skip(static_cast<std::size_t>(count) * 8, values_field);
+}
+
+bool skimBody(WireSkimmer& wire, const joint_state_t*) {
+  std::int32_t joints = 0;
+  if (!(wire.skip(8, "utime") && wire.readCount(joints, "num_joints", kShortestString))) {
+    return false;
+  }
+  for (std::int32_t i = 0; i < joints; ++i) {
+    wire.enterElement("name", static_cast<std::size_t>(i));
+    if (!wire.skipName("name")) return false;
+  }
+  wire.leaveElement();
+  return skimDoubles(wire, "num_positions", "position") &&
+         skimDoubles(wire, "num_velocities", "velocity") &&
+         skimDoubles(wire, "num_efforts", "effort");
+}
+
+bool skimBody(WireSkimmer& wire, const resend_request_t*) {
+  return wire.skip(8, "utime") && wire.skipName("requester");
+}
+
+bool skimBody(WireSkimmer& wire, const robot_description_t*) {
+  return wire.skip(8, "utime") && wire.skipName("authority") && wire.skipName("robot_name") &&
+         wire.skipString("urdf", kUnbounded);
+}
+
+std::string hex(std::int64_t value) {
+  char text[24];
+  std::snprintf(text, sizeof text, "0x%016llx",
+                static_cast<unsigned long long>(static_cast<std::uint64_t>(value)));
+  return text;
+}
+
+template <class Message>
+DecodeResult decodeChecked(const void* data, std::size_t size, Message& out,
+                           const DecodeLimits& limits) {
+  const std::string type = Message::getTypeName();
+  DecodeResult result;
+  if (data == nullptr && size > 0) {
+    result.error = type + ": no data";
+    return result;
+  }
+  if (size > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+    result.error = type + ": " + std::to_string(size) + " bytes is larger than LCM can encode";
+    return result;
+  }
+  WireSkimmer wire(static_cast<const std::uint8_t*>(data), size, limits);
+  std::int64_t fingerprint = 0;
+  if (!wire.readInt64(fingerprint, "fingerprint")) {
+    result.error = type + ": " + wire.error();
+    return result;
+  }
+  if (fingerprint != Message::getHash()) {
+    result.error = type + ": fingerprint " + hex(fingerprint) + " is not " + type + "'s " +
+                   hex(Message::getHash()) + " (another type, or another version of it)";
+    return result;
+  }
+  if (!skimBody(wire, &out)) {
+    result.error = type + ": " + wire.error();
+    return result;
+  }
+  if (wire.remaining() != 0) {
+    result.error = type + ": " + std::to_string(wire.remaining()) +
+                   " unexpected bytes after the end of the message";
+    return result;
+  }
+  try {
+    const int decoded = out.decode(data, 0, static_cast<int>(size));
+    if (decoded != static_cast<int>(size)) {
+      result.error = type + ": LCM decode failed (returned " + std::to_string(decoded) + ")";
+      return result;
+    }
+  } catch (const std::exception& e) {
+    result.error = type + ": LCM decode failed: " + e.what();
+    return result;
+  }
+  result.ok = true;
+  return result;
+}
+
+}  // namespace
+
+DecodeResult decodeMessage(const void* data, std::size_t size, tf_message_t& out,
+                           const DecodeLimits& limits) {
+  return decodeChecked(data, size, out, limits);
+}
+
+DecodeResult decodeMessage(const void* data, std::size_t size, transform_t& out,
+                           const DecodeLimits& limits) {
+  return decodeChecked(data, size, out, limits);
+}
+
+DecodeResult decodeMessage(const void* data, std::size_t size, joint_state_t& out,
+                           const DecodeLimits& limits) {
+  return decodeChecked(data, size, out, limits);
+}
+
+DecodeResult decodeMessage(const void* data, std::size_t size, resend_request_t& out,
+                           const DecodeLimits& limits) {
+  return decodeChecked(data, size, out, limits);
+}
+
+DecodeResult decodeMessage(const void* data, std::size_t size, robot_description_t& out,
+                           const DecodeLimits& limits) {
+  return decodeChecked(data, size, out, limits);
+}
+
+}  // namespace lcmtf
