@@ -22,11 +22,18 @@ bool Transform::isApprox(const Transform& other, double tolerance) const {
          angularDistance(rotation, other.rotation) <= tolerance;
 }
 
+namespace {
+// The angle between two unit quaternions as 4-vectors, half the rotation angle between them.
+// 2*atan2(|a-b|, |a+b|) stays accurate for tiny angles, where acos(a.b) does not.
+double arcAngle(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
+  return 2.0 * std::atan2((a - b).norm(), (a + b).norm());
+}
+}  // namespace
+
 double angularDistance(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
-  // 2*atan2(|a-b|, |a+b|) stays accurate for tiny angles, where acos(dot) does not.
-  Eigen::Vector4d bc = b.coeffs();
-  if (a.coeffs().dot(bc) < 0.0) bc = -bc;
-  return 2.0 * std::atan2((a.coeffs() - bc).norm(), (a.coeffs() + bc).norm());
+  const Eigen::Vector4d bc = a.coeffs().dot(b.coeffs()) < 0.0 ? Eigen::Vector4d(-b.coeffs())
+                                                              : b.coeffs();
+  return 2.0 * arcAngle(a.coeffs(), bc);
 }
 
 Eigen::Quaterniond slerp(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b,
@@ -36,13 +43,13 @@ Eigen::Quaterniond slerp(const Eigen::Quaterniond& a, const Eigen::Quaterniond& 
   if (a.coeffs().dot(bc) < 0.0) bc = -bc;
   if (ratio == 1.0) return Eigen::Quaterniond(bc);
 
-  const double half_angle = 0.5 * angularDistance(a, Eigen::Quaterniond(bc));
+  const double arc = arcAngle(a.coeffs(), bc);
   double weight_a = 1.0 - ratio;
   double weight_b = ratio;
-  if (half_angle > 1e-9) {
-    const double inverse_sine = 1.0 / std::sin(half_angle);
-    weight_a = std::sin(weight_a * half_angle) * inverse_sine;
-    weight_b = std::sin(weight_b * half_angle) * inverse_sine;
+  if (arc > 1e-9) {
+    const double inverse_sine = 1.0 / std::sin(arc);
+    weight_a = std::sin(weight_a * arc) * inverse_sine;
+    weight_b = std::sin(weight_b * arc) * inverse_sine;
   }
   Eigen::Quaterniond result(weight_a * a.coeffs() + weight_b * bc);
   result.normalize();

@@ -103,7 +103,7 @@ class WireSkimmer {
                              std::to_string(limits_.max_array_elements));
     }
     if (elements > remaining() / shortest_element_bytes) {
-      return fail(field, "count " + std::to_string(count) + " needs at least " +
+      return fail(field, "truncated: count " + std::to_string(count) + " needs at least " +
                              std::to_string(elements * shortest_element_bytes) + " bytes, " +
                              std::to_string(remaining()) + " remain");
     }
