@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs the Debian packages lcmtf builds and tests with, only those that are missing.
+set -euo pipefail
+
+packages=(
+  cmake g++ make pkg-config
+  liblcm-dev liblcm-bin liblcm-java libglib2.0-dev
+  libeigen3-dev liburdfdom-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  default-jdk-headless libjchart2d-java
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${db:Status-Status}' "$package" 2>/dev/null | grep -qx installed; then
+    missing+=("$package")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "Installing: ${missing[*]}"
+sudo=()
+[ "$(id -u)" -eq 0 ] || sudo=(sudo)
+"${sudo[@]}" apt-get update
+DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
