@@ -22,7 +22,9 @@ struct Receiver {
   void onBatch(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
     const lcmtf::DecodeResult result = lcmtf::decodeMessage(buffer->data, buffer->data_size, batch);
     received = result.ok;
-    if (!result.ok) std::fprintf(stderr, "ignored a bad message on %s: %s\n", channel.c_str(), result.error.c_str());
+    if (!result.ok)
+      std::fprintf(stderr, "ignored a bad message on %s: %s\n", channel.c_str(),
+                   result.error.c_str());
   }
   lcmtf::tf_message_t batch;
   bool received = false;

@@ -45,9 +45,11 @@ TEST(MessageConversions, QuaternionKeepsScalarPartInW) {
 TEST(MessageConversions, MessageToIsometryMapsChildPointsIntoParent) {
   transform_t message = lcmtf_test::sampleTransform(0);
   message.translation = toMessage(Eigen::Vector3d(0, 0, 1));
-  message.rotation = toMessage(Eigen::Quaterniond(Eigen::AngleAxisd(1.5707963267948966, Eigen::Vector3d::UnitZ())));
+  message.rotation = toMessage(
+      Eigen::Quaterniond(Eigen::AngleAxisd(1.5707963267948966, Eigen::Vector3d::UnitZ())));
   const Eigen::Isometry3d parent_T_child = fromMessage(message).transform.toIsometry();
-  EXPECT_TRUE((parent_T_child * Eigen::Vector3d(1, 0, 0)).isApprox(Eigen::Vector3d(0, 1, 1), 1e-12));
+  EXPECT_TRUE(
+      (parent_T_child * Eigen::Vector3d(1, 0, 0)).isApprox(Eigen::Vector3d(0, 1, 1), 1e-12));
 }
 
 }  // namespace

@@ -8,10 +8,9 @@ namespace lcmtf {
 namespace {
 
 TEST(Time, UtimeRoundTripsExactly) {
-  for (std::int64_t utime : {std::int64_t{0}, std::int64_t{1}, std::int64_t{-1},
-                             std::int64_t{1'700'000'000'123'456},
-                             std::numeric_limits<std::int64_t>::max(),
-                             std::numeric_limits<std::int64_t>::min()}) {
+  for (std::int64_t utime :
+       {std::int64_t{0}, std::int64_t{1}, std::int64_t{-1}, std::int64_t{1'700'000'000'123'456},
+        std::numeric_limits<std::int64_t>::max(), std::numeric_limits<std::int64_t>::min()}) {
     EXPECT_EQ(toUtime(fromUtime(utime)), utime);
   }
 }
@@ -51,8 +50,7 @@ TEST(Time, ToStringPrintsSecondsWithMicrosecondDigits) {
   EXPECT_EQ(toString(fromUtime(-1'500'000)), "-1.500000");
   EXPECT_EQ(toString(Duration(250'000)), "0.250000 s");
   EXPECT_EQ(toString(Duration(-3)), "-0.000003 s");
-  EXPECT_EQ(toString(fromUtime(std::numeric_limits<std::int64_t>::min())),
-            "-9223372036854.775808");
+  EXPECT_EQ(toString(fromUtime(std::numeric_limits<std::int64_t>::min())), "-9223372036854.775808");
 }
 
 }  // namespace

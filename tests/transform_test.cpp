@@ -112,7 +112,9 @@ TEST_P(TransformProperties, SlerpKeepsUnitLengthAndConstantAngularSpeed) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Samples, TransformProperties, ::testing::ValuesIn(sampleTransforms()),
-                         [](const auto& sample) { return "sample" + std::to_string(sample.index); });
+                         [](const auto& sample) {
+                           return "sample" + std::to_string(sample.index);
+                         });
 
 TEST(Transform, DefaultIsIdentity) {
   const Transform t;
@@ -121,7 +123,8 @@ TEST(Transform, DefaultIsIdentity) {
 }
 
 TEST(Transform, AppliesRotationThenTranslation) {
-  const Transform parent_T_child(Eigen::Vector3d(1, 0, 0), axisAngle(kPi / 2, Eigen::Vector3d::UnitZ()));
+  const Transform parent_T_child(Eigen::Vector3d(1, 0, 0),
+                                 axisAngle(kPi / 2, Eigen::Vector3d::UnitZ()));
   const Eigen::Vector3d point_in_parent = parent_T_child * Eigen::Vector3d(1, 0, 0);
   EXPECT_LE((point_in_parent - Eigen::Vector3d(1, 1, 0)).norm(), kTolerance);
   EXPECT_LE((parent_T_child.inverse() * point_in_parent - Eigen::Vector3d(1, 0, 0)).norm(),
@@ -130,7 +133,8 @@ TEST(Transform, AppliesRotationThenTranslation) {
 
 TEST(Transform, ComposeOrderNamesCancel) {
   const Transform map_T_odom(Eigen::Vector3d(10, 0, 0), Eigen::Quaterniond::Identity());
-  const Transform odom_T_base(Eigen::Vector3d(0, 0, 0), axisAngle(kPi / 2, Eigen::Vector3d::UnitZ()));
+  const Transform odom_T_base(Eigen::Vector3d(0, 0, 0),
+                              axisAngle(kPi / 2, Eigen::Vector3d::UnitZ()));
   const Transform map_T_base = map_T_odom * odom_T_base;
   EXPECT_LE((map_T_base * Eigen::Vector3d(1, 0, 0) - Eigen::Vector3d(10, 1, 0)).norm(), kTolerance);
 }
@@ -173,7 +177,8 @@ TEST(Interpolate, TranslationIsLinear) {
   const Transform b(Eigen::Vector3d(2, -4, 8), axisAngle(1.0, Eigen::Vector3d::UnitZ()));
   const Transform quarter = interpolate(a, b, 0.25);
   EXPECT_LE((quarter.translation - Eigen::Vector3d(0.5, -1, 2)).norm(), kTolerance);
-  EXPECT_LE(angularDistance(quarter.rotation, axisAngle(0.25, Eigen::Vector3d::UnitZ())), kTolerance);
+  EXPECT_LE(angularDistance(quarter.rotation, axisAngle(0.25, Eigen::Vector3d::UnitZ())),
+            kTolerance);
 }
 
 TEST(AngularDistance, TreatsNegatedQuaternionAsSameRotation) {

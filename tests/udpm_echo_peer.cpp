@@ -15,11 +15,13 @@ namespace {
 
 class Echo {
  public:
-  Echo(lcm::LCM& lcm, std::string reply_channel) : lcm_(lcm), reply_channel_(std::move(reply_channel)) {}
+  Echo(lcm::LCM& lcm, std::string reply_channel)
+      : lcm_(lcm), reply_channel_(std::move(reply_channel)) {}
 
   void onRequest(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {
     lcmtf::tf_message_t request;
-    const lcmtf::DecodeResult result = lcmtf::decodeMessage(buffer->data, buffer->data_size, request);
+    const lcmtf::DecodeResult result =
+        lcmtf::decodeMessage(buffer->data, buffer->data_size, request);
     if (!result.ok) {
       std::fprintf(stderr, "udpm_echo_peer: ignored a bad message: %s\n", result.error.c_str());
       return;
@@ -48,7 +50,8 @@ class Echo {
 
 int main(int argc, char** argv) {
   if (argc != 6) {
-    std::fprintf(stderr, "usage: %s URL REQUEST_CHANNEL REPLY_CHANNEL REPLIES TIMEOUT_MS\n", argv[0]);
+    std::fprintf(stderr, "usage: %s URL REQUEST_CHANNEL REPLY_CHANNEL REPLIES TIMEOUT_MS\n",
+                 argv[0]);
     return 2;
   }
   lcm::LCM lcm(argv[1]);
@@ -59,10 +62,12 @@ int main(int argc, char** argv) {
   Echo echo(lcm, argv[3]);
   lcm.subscribe(argv[2], &Echo::onRequest, &echo);
   const int wanted = std::atoi(argv[4]);
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(std::atoi(argv[5]));
+  const auto deadline =
+      std::chrono::steady_clock::now() + std::chrono::milliseconds(std::atoi(argv[5]));
   while (echo.replies() < wanted) {
     if (std::chrono::steady_clock::now() >= deadline) {
-      std::fprintf(stderr, "udpm_echo_peer: timed out after %d of %d replies\n", echo.replies(), wanted);
+      std::fprintf(stderr, "udpm_echo_peer: timed out after %d of %d replies\n", echo.replies(),
+                   wanted);
       return 3;
     }
     lcm.handleTimeout(50);

@@ -37,7 +37,8 @@ std::string decodeError(const std::vector<std::uint8_t>& bytes, const DecodeLimi
 TEST(WireDecode, EveryTruncationFailsAndSaysTruncated) {
   const std::vector<std::uint8_t> bytes = encode(lcmtf_test::sampleTfMessage(3));
   for (std::size_t length = 0; length < bytes.size(); ++length) {
-    const std::vector<std::uint8_t> prefix(bytes.begin(), bytes.begin() + static_cast<long>(length));
+    const std::vector<std::uint8_t> prefix(bytes.begin(),
+                                           bytes.begin() + static_cast<long>(length));
     EXPECT_THAT(decodeError<tf_message_t>(prefix), HasSubstr("truncated")) << length;
   }
 }
@@ -45,7 +46,8 @@ TEST(WireDecode, EveryTruncationFailsAndSaysTruncated) {
 TEST(WireDecode, EveryJointStateTruncationFails) {
   const std::vector<std::uint8_t> bytes = encode(lcmtf_test::sampleJointState());
   for (std::size_t length = 0; length < bytes.size(); ++length) {
-    const std::vector<std::uint8_t> prefix(bytes.begin(), bytes.begin() + static_cast<long>(length));
+    const std::vector<std::uint8_t> prefix(bytes.begin(),
+                                           bytes.begin() + static_cast<long>(length));
     EXPECT_FALSE(decodeError<joint_state_t>(prefix).empty()) << length;
   }
 }
@@ -120,9 +122,9 @@ TEST(WireDecode, StringLengthZeroOrNegativeIsRejected) {
   for (std::int32_t length : {0, -1, -100000}) {
     std::vector<std::uint8_t> bytes = encode(message);
     putInt32(bytes, 16, length);
-    EXPECT_EQ(decodeError<tf_message_t>(bytes),
-              "tf_message_t: authority: string length field is " + std::to_string(length) +
-                  " (at least 1 for the terminating NUL)");
+    EXPECT_EQ(decodeError<tf_message_t>(bytes), "tf_message_t: authority: string length field is " +
+                                                    std::to_string(length) +
+                                                    " (at least 1 for the terminating NUL)");
   }
 }
 
@@ -135,7 +137,8 @@ TEST(WireDecode, StringWithoutTerminatorOrWithInnerNulIsRejected) {
 
   bytes = encode(message);
   bytes[22] = 0;
-  EXPECT_EQ(decodeError<tf_message_t>(bytes), "tf_message_t: authority: string contains a NUL byte");
+  EXPECT_EQ(decodeError<tf_message_t>(bytes),
+            "tf_message_t: authority: string contains a NUL byte");
 }
 
 TEST(WireDecode, StringLongerThanTheBufferIsTruncation) {
@@ -161,7 +164,8 @@ TEST(WireDecode, FailedDecodeOfJointStateNamesPositionCount) {
   std::size_t offset = 8 + 8 + 4;
   for (const std::string& name : state.name) offset += 4 + name.size() + 1;
   putInt32(bytes, offset, 1000);
-  EXPECT_THAT(decodeError<joint_state_t>(bytes), HasSubstr("joint_state_t: num_positions: truncated: count 1000 needs"));
+  EXPECT_THAT(decodeError<joint_state_t>(bytes),
+              HasSubstr("joint_state_t: num_positions: truncated: count 1000 needs"));
 }
 
 // Random bytes behind a valid fingerprint, and random corruptions of valid messages: decoding

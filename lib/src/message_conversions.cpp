@@ -38,10 +38,9 @@ Eigen::Quaterniond fromMessage(const quaternion_t& rotation) {
 }
 
 TransformStamped fromMessage(const transform_t& transform) {
-  return TransformStamped{fromUtime(transform.utime), transform.parent_frame,
-                          transform.child_frame,
-                          Transform(fromMessage(transform.translation),
-                                    fromMessage(transform.rotation))};
+  return TransformStamped{
+      fromUtime(transform.utime), transform.parent_frame, transform.child_frame,
+      Transform(fromMessage(transform.translation), fromMessage(transform.rotation))};
 }
 
 }  // namespace lcmtf

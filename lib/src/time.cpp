@@ -7,9 +7,7 @@
 
 namespace lcmtf {
 
-TimePoint now() {
-  return std::chrono::time_point_cast<Duration>(std::chrono::system_clock::now());
-}
+TimePoint now() { return std::chrono::time_point_cast<Duration>(std::chrono::system_clock::now()); }
 
 double toSeconds(Duration d) { return static_cast<double>(d.count()) * 1e-6; }
 

@@ -31,13 +31,12 @@ double arcAngle(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
 }  // namespace
 
 double angularDistance(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
-  const Eigen::Vector4d bc = a.coeffs().dot(b.coeffs()) < 0.0 ? Eigen::Vector4d(-b.coeffs())
-                                                              : b.coeffs();
+  const Eigen::Vector4d bc =
+      a.coeffs().dot(b.coeffs()) < 0.0 ? Eigen::Vector4d(-b.coeffs()) : b.coeffs();
   return 2.0 * arcAngle(a.coeffs(), bc);
 }
 
-Eigen::Quaterniond slerp(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b,
-                         double ratio) {
+Eigen::Quaterniond slerp(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b, double ratio) {
   if (ratio == 0.0) return a;
   Eigen::Vector4d bc = b.coeffs();
   if (a.coeffs().dot(bc) < 0.0) bc = -bc;

@@ -9,8 +9,8 @@ namespace lcmtf_test {
 std::string privateUdpmUrl(const std::string& test_name) {
   constexpr std::size_t kFirstPort = 20000;
   constexpr std::size_t kPortCount = 30000;
-  const std::size_t seed = std::hash<std::string>{}(test_name) ^
-                           (static_cast<std::size_t>(getpid()) * 2654435761u);
+  const std::size_t seed =
+      std::hash<std::string>{}(test_name) ^ (static_cast<std::size_t>(getpid()) * 2654435761u);
   const std::size_t port = kFirstPort + seed % kPortCount;
   return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0";
 }

@@ -44,7 +44,8 @@ struct Transform {
   bool isApprox(const Transform& other, double tolerance = 1e-12) const;
 };
 
-/// Shortest-arc spherical interpolation: `a` at ratio 0, `b` (or -b) at ratio 1, unit length between.
+/// Shortest-arc spherical interpolation: `a` at ratio 0, `b` (or -b) at ratio 1, unit length
+/// between.
 Eigen::Quaterniond slerp(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b, double ratio);
 
 /// Linear interpolation of translation and slerp of rotation; exact at ratio 0 and 1.
