@@ -4,9 +4,7 @@ import java.lang.reflect.Array;
 import java.lang.reflect.InvocationTargetException;
 import java.nio.ByteBuffer;
 import java.nio.file.Files;
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
-import java.util.List;
 import java.util.Map;
 import lcm.lcm.LCMDataInputStream;
 import lcm.spy.LCMTypeDatabase;
@@ -61,7 +59,7 @@ public class SpyDecodesLcmtf {
     }
     File dir = new File(args[0]);
     LCMTypeDatabase types = new LCMTypeDatabase();
-    List<String> failures = new ArrayList<>();
+    int failures = 0;
     for (Map.Entry<String, Object[]> entry : EXPECTED.entrySet()) {
       String type = entry.getKey();
       try {
@@ -69,24 +67,19 @@ public class SpyDecodesLcmtf {
         System.out.println("ok   lcmtf." + type);
       } catch (Exception e) {
         Throwable cause = e instanceof InvocationTargetException ? e.getCause() : e;
-        String message = "FAIL lcmtf." + type + ": " + cause;
-        System.out.println(message);
-        failures.add(message);
+        System.out.println("FAIL lcmtf." + type + ": " + cause);
+        failures++;
       }
     }
     File[] unexpected = dir.listFiles((d, name) ->
         name.endsWith(".bin") && !EXPECTED.containsKey(name.substring(0, name.length() - 4)));
-    if (unexpected != null) {
-      for (File f : unexpected) {
-        failures.add("FAIL " + f.getName() + ": no expected values for this type");
-      }
+    for (File f : unexpected == null ? new File[0] : unexpected) {
+      System.out.println("FAIL " + f.getName() + ": no expected values for this type");
+      failures++;
     }
-    if (!failures.isEmpty()) {
-      System.err.println("lcm-spy would not decode every lcmtf type (CLASSPATH="
-          + System.getenv("CLASSPATH") + "):");
-      for (String failure : failures) {
-        System.err.println("  " + failure);
-      }
+    if (failures > 0) {
+      System.err.println(failures + " failure(s): lcm-spy would not decode every lcmtf type with"
+          + " CLASSPATH=" + System.getenv("CLASSPATH"));
       System.exit(1);
     }
   }

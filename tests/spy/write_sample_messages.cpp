@@ -33,7 +33,8 @@ lcmtf::transform_t makeTransform(std::int64_t utime, const std::string& parent,
 template <class Message>
 bool write(const std::string& dir, const std::string& type, const Message& msg) {
   std::vector<char> bytes(static_cast<std::size_t>(msg.getEncodedSize()));
-  if (msg.encode(bytes.data(), 0, static_cast<int>(bytes.size())) != static_cast<int>(bytes.size())) {
+  if (msg.encode(bytes.data(), 0, static_cast<int>(bytes.size())) !=
+      static_cast<int>(bytes.size())) {
     std::fprintf(stderr, "write_sample_messages: cannot encode %s\n", type.c_str());
     return false;
   }
@@ -86,8 +87,7 @@ int main(int argc, char** argv) {
   robot.urdf = "<robot name=\"spy_bot\"><link name=\"base_link\"/></robot>";
 
   const bool ok = write(dir, "tf_message_t", tf) && write(dir, "transform_t", transform) &&
-                  write(dir, "joint_state_t", joints) &&
-                  write(dir, "resend_request_t", resend) &&
+                  write(dir, "joint_state_t", joints) && write(dir, "resend_request_t", resend) &&
                   write(dir, "robot_description_t", robot);
   return ok ? 0 : 1;
 }

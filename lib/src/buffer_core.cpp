@@ -1,0 +1,360 @@
+#include "lcmtf/buffer_core.hpp"
+
+#include <cmath>
+#include <iostream>
+#include <shared_mutex>
+
+#include "buffer_core_impl.hpp"
+
+namespace lcmtf {
+
+using SharedLock = std::shared_lock<detail::ReadMostlyLock>;
+using ExclusiveLock = std::unique_lock<detail::ReadMostlyLock>;
+
+const char* describe(InsertRejection kind) {
+  switch (kind) {
+    case InsertRejection::kNonFinite:
+      return "non-finite value";
+    case InsertRejection::kBadQuaternion:
+      return "invalid quaternion";
+    case InsertRejection::kEmptyFrameName:
+      return "empty frame name";
+    case InsertRejection::kSelfParented:
+      return "frame is its own parent";
+    case InsertRejection::kOlderThanHistory:
+      return "older than the history kept";
+    case InsertRejection::kCount:
+      break;
+  }
+  return "unknown";
+}
+
+BufferCore::Impl::Impl(Duration cache_time)
+    : cache_time_(cache_time.count()),
+      reporter_([](const std::string& message) { std::cerr << "lcmtf: " << message << '\n'; }) {
+  names_.emplace_back();
+  frames_.emplace_back();  // id 0: no frame
+}
+
+FrameId BufferCore::Impl::idOf(std::string_view name) const {
+  const auto found = ids_.find(name);
+  return found == ids_.end() ? kNoFrame : found->second;
+}
+
+FrameId BufferCore::Impl::addFrame(std::string_view name) {
+  const FrameId existing = idOf(name);
+  if (existing != kNoFrame) return existing;
+  const std::string& stored = names_.emplace_back(name);
+  const auto id = static_cast<FrameId>(frames_.size());
+  frames_.emplace_back().name = stored;
+  ids_.emplace(stored, id);
+  return id;
+}
+
+void BufferCore::Impl::reportOnce(InsertRejection kind, const std::string& message) {
+  std::function<void(const std::string&)> reporter;
+  {
+    std::lock_guard<std::mutex> guard(reporter_mutex_);
+    bool& reported = reported_[static_cast<std::size_t>(kind)];
+    if (reported || !reporter_) return;
+    reported = true;
+    reporter = reporter_;
+  }
+  reporter(message + " (reported once; later ones are only counted)");
+}
+
+namespace {
+
+bool isFinite(const Transform& t) {
+  return t.translation.allFinite() && t.rotation.coeffs().allFinite();
+}
+
+std::string edgeName(const TransformStamped& t) {
+  return "'" + t.parent_frame + "' -> '" + t.child_frame + "' at " + toString(t.stamp);
+}
+
+}  // namespace
+
+bool BufferCore::Impl::insert(const TransformStamped& transform, const std::string& authority,
+                              bool is_static, std::string* error) {
+  const std::string_view parent = stripLeadingSlash(transform.parent_frame);
+  const std::string_view child = stripLeadingSlash(transform.child_frame);
+  InsertRejection rejection = InsertRejection::kCount;
+  std::string reason;
+  Transform value = transform.transform;
+  const double norm = value.rotation.norm();
+  if (parent.empty() || child.empty()) {
+    rejection = InsertRejection::kEmptyFrameName;
+    reason = "empty " + std::string(child.empty() ? "child" : "parent") + " frame name in " +
+             edgeName(transform);
+  } else if (parent == child) {
+    rejection = InsertRejection::kSelfParented;
+    reason = "frame '" + std::string(child) + "' cannot be its own parent";
+  } else if (!isFinite(value)) {
+    rejection = InsertRejection::kNonFinite;
+    reason = "NaN or infinite value in " + edgeName(transform);
+  } else if (norm == 0.0 || std::abs(norm - 1.0) > 1e-3) {
+    rejection = InsertRejection::kBadQuaternion;
+    reason = "quaternion of norm " + std::to_string(norm) + " in " + edgeName(transform) +
+             " (must be within 1e-3 of 1)";
+  }
+
+  if (rejection == InsertRejection::kCount) {
+    const bool normalize = norm != 1.0;
+    if (normalize) value.rotation.coeffs() /= norm;
+    const std::int64_t stamp = toUtime(transform.stamp);
+    ExclusiveLock lock(lock_);
+    const FrameId child_id = addFrame(child);
+    const FrameId parent_id = addFrame(parent);
+    FrameRecord& record = frames_[child_id];
+    if (is_static) {
+      record.cache.setStatic(parent_id, value);
+    } else {
+      const detail::InsertOutcome outcome =
+          record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_);
+      if (outcome == detail::InsertOutcome::kTooOld) {
+        rejection = InsertRejection::kOlderThanHistory;
+        reason = edgeName(transform) + " is older than the history kept: the newest sample is at " +
+                 toString(fromUtime(record.cache.newest().stamp)) + " and the cache time is " +
+                 toString(Duration(cache_time_));
+      } else if (outcome == detail::InsertOutcome::kReplaced) {
+        ++statistics_.replaced;
+      }
+    }
+    if (rejection == InsertRejection::kCount) {
+      auto [found, added] = authority_ids_.try_emplace(
+          authority, static_cast<std::uint32_t>(authorities_.size()) + 1);
+      if (added) authorities_.push_back(authority);
+      if (record.authority != 0 && record.authority != found->second) {
+        ++record.authority_conflicts;
+        ++statistics_.authority_conflicts;
+      }
+      record.authority = found->second;
+      ++statistics_.inserted;
+      if (normalize) ++statistics_.normalized;
+      return true;
+    }
+  }
+
+  {
+    ExclusiveLock lock(lock_);
+    ++statistics_.rejected[static_cast<std::size_t>(rejection)];
+  }
+  if (error) *error = reason;
+  reportOnce(rejection, "rejected a transform: " + reason);
+  return false;
+}
+
+BufferCore::BufferCore(Duration cache_time) : impl_(std::make_unique<Impl>(cache_time)) {}
+
+BufferCore::~BufferCore() = default;
+
+bool BufferCore::setTransform(const TransformStamped& transform, const std::string& authority,
+                              bool is_static, std::string* error) {
+  const bool stored = impl_->insert(transform, authority, is_static, error);
+  if (stored && impl_->has_requests_.load(std::memory_order_acquire)) {
+    for (auto& notify : impl_->collectDecidedRequests()) notify();
+  }
+  return stored;
+}
+
+namespace {
+
+std::string lookupWhat(const std::string& target, const std::string& source) {
+  return "lookup of '" + source + "' in '" + target + "'";
+}
+
+// tf2 answers a lookup from a frame to itself with identity without checking the frame.
+bool sameFrame(const std::string& target, const std::string& source) {
+  const std::string_view a = stripLeadingSlash(target);
+  return !a.empty() && a == stripLeadingSlash(source);
+}
+
+}  // namespace
+
+TransformStamped BufferCore::lookupTransform(const std::string& target, const std::string& source,
+                                             TimePoint time) const {
+  TransformStamped result;
+  SharedLock lock(impl_->lock_);
+  if (sameFrame(target, source)) {
+    const FrameId id = impl_->idOf(stripLeadingSlash(target));
+    std::int64_t stamp = toUtime(time);
+    if (stamp == 0 && id != kNoFrame) impl_->latestCommonTime(id, id, stamp);
+    const std::string name(stripLeadingSlash(target));
+    return TransformStamped{fromUtime(stamp), name, name, Transform::identity()};
+  }
+  FrameId target_id = kNoFrame;
+  FrameId source_id = kNoFrame;
+  LookupFailure failure = impl_->resolve(target, "target", target_id);
+  if (!failure) failure = impl_->resolve(source, "source", source_id);
+  if (!failure) failure = impl_->lookup(target_id, source_id, toUtime(time), &result);
+  if (failure) impl_->raise(failure, lookupWhat(target, source));
+  return result;
+}
+
+TransformStamped BufferCore::lookupTransform(FrameHandle target, FrameHandle source,
+                                             TimePoint time) const {
+  TransformStamped result;
+  SharedLock lock(impl_->lock_);
+  const auto frame_count = impl_->frames_.size();
+  if (!target || !source || target.id >= frame_count || source.id >= frame_count) {
+    throw InvalidArgumentException(
+        "lookupTransform: a frame handle is null or not from this buffer");
+  }
+  const LookupFailure failure = impl_->lookup(target.id, source.id, toUtime(time), &result);
+  if (failure) {
+    impl_->raise(failure, lookupWhat(std::string(impl_->nameOf(target.id)),
+                                     std::string(impl_->nameOf(source.id))));
+  }
+  return result;
+}
+
+TransformStamped BufferCore::lookupTransform(const std::string& target, TimePoint target_time,
+                                             const std::string& source, TimePoint source_time,
+                                             const std::string& fixed) const {
+  const TransformStamped fixed_T_source = lookupTransform(fixed, source, source_time);
+  const TransformStamped target_T_fixed = lookupTransform(target, fixed, target_time);
+  return TransformStamped{target_T_fixed.stamp, target_T_fixed.parent_frame,
+                          fixed_T_source.child_frame,
+                          target_T_fixed.transform * fixed_T_source.transform};
+}
+
+bool BufferCore::canTransform(const std::string& target, const std::string& source, TimePoint time,
+                              std::string* why) const {
+  SharedLock lock(impl_->lock_);
+  if (sameFrame(target, source)) return true;
+  FrameId target_id = kNoFrame;
+  FrameId source_id = kNoFrame;
+  LookupFailure failure = impl_->resolve(target, "target", target_id);
+  if (!failure) failure = impl_->resolve(source, "source", source_id);
+  if (!failure) failure = impl_->lookup(target_id, source_id, toUtime(time), nullptr);
+  if (failure && why) *why = impl_->describe(failure, lookupWhat(target, source));
+  return !failure;
+}
+
+bool BufferCore::canTransform(FrameHandle target, FrameHandle source, TimePoint time,
+                              std::string* why) const {
+  SharedLock lock(impl_->lock_);
+  const auto frame_count = impl_->frames_.size();
+  if (!target || !source || target.id >= frame_count || source.id >= frame_count) {
+    if (why) *why = "canTransform: a frame handle is null or not from this buffer";
+    return false;
+  }
+  const LookupFailure failure = impl_->lookup(target.id, source.id, toUtime(time), nullptr);
+  if (failure && why) {
+    *why = impl_->describe(failure, lookupWhat(std::string(impl_->nameOf(target.id)),
+                                               std::string(impl_->nameOf(source.id))));
+  }
+  return !failure;
+}
+
+bool BufferCore::canTransform(const std::string& target, TimePoint target_time,
+                              const std::string& source, TimePoint source_time,
+                              const std::string& fixed, std::string* why) const {
+  return canTransform(fixed, source, source_time, why) &&
+         canTransform(target, fixed, target_time, why);
+}
+
+TimePoint BufferCore::getLatestCommonTime(const std::string& target,
+                                          const std::string& source) const {
+  SharedLock lock(impl_->lock_);
+  FrameId target_id = kNoFrame;
+  FrameId source_id = kNoFrame;
+  std::int64_t stamp = 0;
+  LookupFailure failure = impl_->resolve(target, "target", target_id);
+  if (!failure) failure = impl_->resolve(source, "source", source_id);
+  if (!failure) failure = impl_->latestCommonTime(target_id, source_id, stamp);
+  if (failure) impl_->raise(failure, "latest common time of '" + source + "' and '" + target + "'");
+  return fromUtime(stamp);
+}
+
+FrameHandle BufferCore::resolveFrame(const std::string& frame) {
+  const std::string_view name = stripLeadingSlash(frame);
+  if (name.empty()) throw InvalidArgumentException("resolveFrame: frame names must not be empty");
+  {
+    SharedLock lock(impl_->lock_);
+    const FrameId id = impl_->idOf(name);
+    if (id != kNoFrame) return FrameHandle{id};
+  }
+  ExclusiveLock lock(impl_->lock_);
+  return FrameHandle{impl_->addFrame(name)};
+}
+
+FrameHandle BufferCore::findFrame(const std::string& frame) const {
+  SharedLock lock(impl_->lock_);
+  return FrameHandle{impl_->idOf(stripLeadingSlash(frame))};
+}
+
+bool BufferCore::frameExists(const std::string& frame) const { return bool(findFrame(frame)); }
+
+bool BufferCore::getParent(const std::string& frame, TimePoint time, std::string& parent) const {
+  SharedLock lock(impl_->lock_);
+  const FrameId id = impl_->idOf(stripLeadingSlash(frame));
+  if (id == kNoFrame) return false;
+  const detail::TimeCache& cache = impl_->frames_[id].cache;
+  detail::SampleStatus status = detail::SampleStatus::kOk;
+  FrameId parent_id = kNoFrame;
+  if (time == kLatestTime) {
+    parent_id = cache.empty() ? kNoFrame : cache.newest().parent;
+  } else {
+    parent_id = cache.parentAt(toUtime(time), status);
+  }
+  if (parent_id == kNoFrame || status != detail::SampleStatus::kOk) return false;
+  parent.assign(impl_->nameOf(parent_id));
+  return true;
+}
+
+std::vector<std::string> BufferCore::getAllFrameNames() const {
+  SharedLock lock(impl_->lock_);
+  std::vector<std::string> names;
+  names.reserve(impl_->frames_.size() - 1);
+  for (std::size_t id = 1; id < impl_->frames_.size(); ++id) {
+    names.emplace_back(impl_->frames_[id].name);
+  }
+  return names;
+}
+
+std::vector<std::string> BufferCore::getFrameChain(const std::string& target,
+                                                   const std::string& source,
+                                                   TimePoint time) const {
+  SharedLock lock(impl_->lock_);
+  FrameId target_id = kNoFrame;
+  FrameId source_id = kNoFrame;
+  LookupFailure failure = impl_->resolve(target, "target", target_id);
+  if (!failure) failure = impl_->resolve(source, "source", source_id);
+  std::vector<PathEdge> up_from_source;
+  std::vector<PathEdge> up_from_target;
+  FrameId ancestor = kNoFrame;
+  std::int64_t stamp = toUtime(time);
+  if (!failure && stamp == 0) failure = impl_->latestCommonTime(target_id, source_id, stamp);
+  if (!failure) {
+    failure = impl_->walk(target_id, source_id, stamp, up_from_source, up_from_target, &ancestor);
+  }
+  if (failure) impl_->raise(failure, "frame chain from '" + source + "' to '" + target + "'");
+  std::vector<std::string> chain;
+  for (const PathEdge& edge : up_from_source) chain.emplace_back(impl_->nameOf(edge.child));
+  chain.emplace_back(impl_->nameOf(ancestor));
+  for (auto edge = up_from_target.rbegin(); edge != up_from_target.rend(); ++edge) {
+    chain.emplace_back(impl_->nameOf(edge->child));
+  }
+  return chain;
+}
+
+void BufferCore::clear() {
+  ExclusiveLock lock(impl_->lock_);
+  for (FrameRecord& frame : impl_->frames_) frame.cache.clearHistory();
+}
+
+Duration BufferCore::cacheTime() const { return Duration(impl_->cache_time_); }
+
+InsertStatistics BufferCore::statistics() const {
+  SharedLock lock(impl_->lock_);
+  return impl_->statistics_;
+}
+
+void BufferCore::setErrorReporter(std::function<void(const std::string& message)> reporter) {
+  std::lock_guard<std::mutex> guard(impl_->reporter_mutex_);
+  impl_->reporter_ = std::move(reporter);
+}
+
+}  // namespace lcmtf

@@ -1,0 +1,121 @@
+#pragma once
+
+#include <atomic>
+#include <deque>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "lcmtf/buffer_core.hpp"
+#include "read_mostly_lock.hpp"
+#include "time_cache.hpp"
+
+namespace lcmtf {
+
+using detail::FrameId;
+using detail::kNoFrame;
+
+/// One frame and the edge to its parent.
+struct FrameRecord {
+  std::string_view name;
+  detail::TimeCache cache;
+  std::uint32_t authority = 0;
+  std::uint64_t authority_conflicts = 0;
+};
+
+/// An edge on a lookup's path: the child frame and the samples giving its value.
+struct PathEdge {
+  FrameId child = kNoFrame;
+  FrameId parent = kNoFrame;
+  detail::SampleStatus status = detail::SampleStatus::kOk;
+  detail::SampleSpan span;
+};
+
+/// Why a lookup failed, kept as data so canTransform pays for no message it does not print.
+struct LookupFailure {
+  enum class Kind { kNone, kInvalidName, kUnknownFrame, kNotConnected, kLoop, kPast, kFuture };
+  Kind kind = Kind::kNone;
+  std::string frame;      // the bad or unknown name
+  const char* role = "";  // "target", "source", "fixed"
+  FrameId target = kNoFrame;
+  FrameId source = kNoFrame;
+  FrameId edge_child = kNoFrame;  // extrapolation: the edge (child -> its parent)
+  FrameId edge_parent = kNoFrame;
+  std::int64_t requested = 0;
+  std::int64_t oldest = 0;
+  std::int64_t newest = 0;
+  std::vector<FrameId> loop;
+  explicit operator bool() const { return kind != Kind::kNone; }
+};
+
+/// The pending request of addTransformableRequest.
+struct TransformableRequest {
+  TransformableCallback callback;
+  std::string target;
+  std::string source;
+  TimePoint time;
+};
+
+class BufferCore::Impl {
+ public:
+  explicit Impl(Duration cache_time);
+
+  // All of these expect lock_ held (shared is enough unless they say they write).
+  FrameId idOf(std::string_view name) const;
+  FrameId addFrame(std::string_view name);  // exclusive lock
+  const std::string_view& nameOf(FrameId id) const { return frames_[id].name; }
+  std::string quoted(FrameId id) const { return "'" + std::string(nameOf(id)) + "'"; }
+
+  /// target_T_source at `stamp` (0: latest common time) into `out`, or why not.
+  LookupFailure lookup(FrameId target, FrameId source, std::int64_t stamp,
+                       TransformStamped* out) const;
+  LookupFailure latestCommonTime(FrameId target, FrameId source, std::int64_t& stamp) const;
+  /// The edges from each frame up to their common ancestor at `stamp`.
+  LookupFailure walk(FrameId target, FrameId source, std::int64_t stamp,
+                     std::vector<PathEdge>& source_edges, std::vector<PathEdge>& target_edges,
+                     FrameId* ancestor) const;
+  /// The stamps [oldest, newest] at which every dynamic edge between the frames has data, with
+  /// the tree as it stands at its newest samples; both zero when every edge is static.
+  LookupFailure commonTimeRange(FrameId target, FrameId source, std::int64_t& oldest,
+                                std::int64_t& newest) const;
+  LookupFailure resolve(const std::string& name, const char* role, FrameId& id) const;
+  std::string describe(const LookupFailure& failure, const std::string& what) const;
+  [[noreturn]] void raise(const LookupFailure& failure, const std::string& what) const;
+
+  bool insert(const TransformStamped& transform, const std::string& authority, bool is_static,
+              std::string* error);  // exclusive lock
+  void reportOnce(InsertRejection kind, const std::string& message);
+
+  /// Requests decided by the data now stored; call without lock_ and run them afterwards.
+  std::vector<std::function<void()>> collectDecidedRequests();
+
+  mutable detail::ReadMostlyLock lock_;
+  const std::int64_t cache_time_;
+  std::deque<std::string> names_;  // stable storage behind FrameRecord::name
+  std::vector<FrameRecord> frames_;
+  std::unordered_map<std::string_view, FrameId> ids_;
+  std::vector<std::string> authorities_;
+  std::unordered_map<std::string, std::uint32_t> authority_ids_;
+  InsertStatistics statistics_;
+
+  std::mutex reporter_mutex_;
+  std::function<void(const std::string&)> reporter_;
+  std::array<bool, static_cast<std::size_t>(InsertRejection::kCount)> reported_{};
+
+  std::mutex requests_mutex_;
+  std::map<TransformableRequestHandle, TransformableRequest> requests_;
+  TransformableRequestHandle next_request_ = 1;
+  std::atomic<bool> has_requests_{false};
+};
+
+/// One leading '/' is not part of a frame's name.
+inline std::string_view stripLeadingSlash(std::string_view name) {
+  if (!name.empty() && name.front() == '/') name.remove_prefix(1);
+  return name;
+}
+
+}  // namespace lcmtf

@@ -1,0 +1,46 @@
+#include "read_mostly_lock.hpp"
+
+#include <thread>
+
+namespace lcmtf::detail {
+
+namespace {
+std::size_t threadSlotIndex() {
+  static std::atomic<std::size_t> next_thread{0};
+  thread_local const std::size_t index = next_thread.fetch_add(1, std::memory_order_relaxed);
+  return index;
+}
+}  // namespace
+
+ReadMostlyLock::Slot& ReadMostlyLock::mySlot() const { return slots_[threadSlotIndex() % kSlots]; }
+
+// Reader and writer each announce themselves, then look for the other, both in the single
+// total order of seq_cst operations: at least one of them sees the other and backs off.
+void ReadMostlyLock::lock_shared() const {
+  Slot& slot = mySlot();
+  for (;;) {
+    slot.readers.fetch_add(1, std::memory_order_seq_cst);
+    if (!writing_.load(std::memory_order_seq_cst)) return;
+    slot.readers.fetch_sub(1, std::memory_order_release);
+    while (writing_.load(std::memory_order_acquire)) std::this_thread::yield();
+  }
+}
+
+void ReadMostlyLock::unlock_shared() const {
+  mySlot().readers.fetch_sub(1, std::memory_order_release);
+}
+
+void ReadMostlyLock::lock() {
+  writers_.lock();
+  writing_.store(true, std::memory_order_seq_cst);
+  for (Slot& slot : slots_) {
+    while (slot.readers.load(std::memory_order_seq_cst) != 0) std::this_thread::yield();
+  }
+}
+
+void ReadMostlyLock::unlock() {
+  writing_.store(false, std::memory_order_release);
+  writers_.unlock();
+}
+
+}  // namespace lcmtf::detail

@@ -1,0 +1,82 @@
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "lcmtf/transform.hpp"
+
+namespace lcmtf::detail {
+
+using FrameId = std::uint32_t;
+constexpr FrameId kNoFrame = 0;
+
+/// One stored value of an edge: the pose of the child in `parent` at `stamp` (utime).
+struct EdgeSample {
+  std::int64_t stamp = 0;
+  FrameId parent = kNoFrame;
+  Transform transform;
+};
+
+/// Where a time falls in an edge's history.
+enum class SampleStatus { kOk, kEmpty, kPast, kFuture };
+
+/// The edge's value at a time, as the samples it comes from: `older` alone when exact (or when
+/// the parent changes between the two), else `older` and `newer` mixed by `ratio`.
+struct SampleSpan {
+  const EdgeSample* older = nullptr;
+  const EdgeSample* newer = nullptr;
+  double ratio = 0.0;
+  FrameId parent() const { return older->parent; }
+  Transform value() const {
+    return newer ? interpolate(older->transform, newer->transform, ratio) : older->transform;
+  }
+};
+
+enum class InsertOutcome { kAdded, kReplaced, kTooOld };
+
+/// The history of one edge (child frame -> parent) kept in time order in a ring, or a single
+/// static value valid at every time.
+class TimeCache {
+ public:
+  bool isStatic() const { return is_static_; }
+  bool empty() const { return count_ == 0; }
+  std::size_t size() const { return count_; }
+  std::size_t capacity() const { return ring_.size(); }
+
+  /// Makes the edge static with this value, dropping any history.
+  void setStatic(FrameId parent, const Transform& transform);
+  /// Adds a sample in time order (the edge becomes dynamic), pruning samples older than
+  /// `cache_time` behind the newest; a sample already older than that window is refused.
+  InsertOutcome insert(const EdgeSample& sample, std::int64_t cache_time);
+  /// Drops the history of a dynamic edge; a static edge keeps its value.
+  void clearHistory();
+
+  const EdgeSample& oldest() const { return at(0); }
+  const EdgeSample& newest() const { return at(count_ - 1); }
+  const EdgeSample& at(std::size_t index) const { return ring_[(head_ + index) & mask_]; }
+
+  /// The samples that give the edge's value at `stamp` (any stamp for a static edge).
+  SampleStatus find(std::int64_t stamp, SampleSpan& span) const;
+  /// The parent at `stamp`, whether or not the edge has data there (then its nearest sample's
+  /// parent), with the status find() would give; kNoFrame when the edge is empty.
+  FrameId parentAt(std::int64_t stamp, SampleStatus& status) const;
+
+ private:
+  EdgeSample& slot(std::size_t index) { return ring_[(head_ + index) & mask_]; }
+  std::size_t indexAtOrBefore(std::int64_t stamp) const;
+  void grow();
+  void noteParentChanges(std::size_t index);
+  bool hasSingleParent() const { return parent_changed_at_ <= at(0).stamp; }
+
+  std::vector<EdgeSample> ring_;
+  std::size_t mask_ = 0;
+  std::size_t head_ = 0;
+  std::size_t count_ = 0;
+  bool is_static_ = false;
+  // The newest stamp at which the parent differs from the sample before; samples up to the
+  // oldest one all share a parent when this is not newer than the oldest.
+  std::int64_t parent_changed_at_ = std::numeric_limits<std::int64_t>::min();
+};
+
+}  // namespace lcmtf::detail
