@@ -10,10 +10,9 @@ find_program(LCM_GEN_EXECUTABLE lcm-gen)
 
 if(NOT LCM_INCLUDE_DIR OR NOT LCM_LIBRARY)
   set(_lcmtf_lcm_message "LCM not found (header: ${LCM_INCLUDE_DIR}, library: ${LCM_LIBRARY}); on Debian: apt-get install liblcm-dev")
-  if(lcmtf_FIND_REQUIRED OR LCMTF_REQUIRE_LCM)
+  if(LCMTF_REQUIRE_LCM)
     message(FATAL_ERROR "${_lcmtf_lcm_message}")
   endif()
-  message(WARNING "${_lcmtf_lcm_message}")
   return()
 endif()
 

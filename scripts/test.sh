@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds lcmtf and runs every test twice: a normal build, then an ASan+UBSan build of the tests.
+# Builds lcmtf and runs the tests: every test in a normal build, the concurrency tests under
+# ThreadSanitizer, then every unit test again in an ASan+UBSan build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -8,6 +9,11 @@ jobs=${LCMTF_JOBS:-2}
 cmake -S . -B build/release -DCMAKE_BUILD_TYPE=RelWithDebInfo
 cmake --build build/release -j"$jobs"
 ctest --test-dir build/release -j"$jobs" --output-on-failure
+
+cmake -S . -B build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLCMTF_SANITIZE=thread \
+  -DLCMTF_BUILD_JAVA=OFF -DLCMTF_BUILD_EXAMPLES=OFF -DLCMTF_BUILD_BENCHMARKS=OFF
+cmake --build build/tsan -j"$jobs" --target buffer_core_concurrency_test
+ctest --test-dir build/tsan -R Concurrency --output-on-failure
 
 cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=Debug -DLCMTF_SANITIZE=address,undefined \
   -DLCMTF_BUILD_JAVA=OFF -DLCMTF_BUILD_EXAMPLES=OFF -DLCMTF_BUILD_BENCHMARKS=OFF
