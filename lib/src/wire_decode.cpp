@@ -178,8 +178,10 @@ std::string hex(std::int64_t value) {
   return text;
 }
 
+}  // namespace
+
 template <class Message>
-DecodeResult decodeChecked(const void* data, std::size_t size, Message& out,
+DecodeResult decodeMessage(const void* data, std::size_t size, Message& out,
                            const DecodeLimits& limits) {
   const std::string type = Message::getTypeName();
   DecodeResult result;
@@ -225,31 +227,12 @@ DecodeResult decodeChecked(const void* data, std::size_t size, Message& out,
   return result;
 }
 
-}  // namespace
-
-DecodeResult decodeMessage(const void* data, std::size_t size, tf_message_t& out,
-                           const DecodeLimits& limits) {
-  return decodeChecked(data, size, out, limits);
-}
-
-DecodeResult decodeMessage(const void* data, std::size_t size, transform_t& out,
-                           const DecodeLimits& limits) {
-  return decodeChecked(data, size, out, limits);
-}
-
-DecodeResult decodeMessage(const void* data, std::size_t size, joint_state_t& out,
-                           const DecodeLimits& limits) {
-  return decodeChecked(data, size, out, limits);
-}
-
-DecodeResult decodeMessage(const void* data, std::size_t size, resend_request_t& out,
-                           const DecodeLimits& limits) {
-  return decodeChecked(data, size, out, limits);
-}
-
-DecodeResult decodeMessage(const void* data, std::size_t size, robot_description_t& out,
-                           const DecodeLimits& limits) {
-  return decodeChecked(data, size, out, limits);
-}
+template DecodeResult decodeMessage(const void*, std::size_t, tf_message_t&, const DecodeLimits&);
+template DecodeResult decodeMessage(const void*, std::size_t, transform_t&, const DecodeLimits&);
+template DecodeResult decodeMessage(const void*, std::size_t, joint_state_t&, const DecodeLimits&);
+template DecodeResult decodeMessage(const void*, std::size_t, resend_request_t&,
+                                    const DecodeLimits&);
+template DecodeResult decodeMessage(const void*, std::size_t, robot_description_t&,
+                                    const DecodeLimits&);
 
 }  // namespace lcmtf

@@ -26,15 +26,9 @@ struct DecodeResult {
 
 /// Decodes LCM bytes into `out` without trusting any length or count they carry: a wrong
 /// fingerprint, truncation, a bad string or an absurd count fails with a reason instead.
-DecodeResult decodeMessage(const void* data, std::size_t size, tf_message_t& out,
-                           const DecodeLimits& limits = {});
-DecodeResult decodeMessage(const void* data, std::size_t size, transform_t& out,
-                           const DecodeLimits& limits = {});
-DecodeResult decodeMessage(const void* data, std::size_t size, joint_state_t& out,
-                           const DecodeLimits& limits = {});
-DecodeResult decodeMessage(const void* data, std::size_t size, resend_request_t& out,
-                           const DecodeLimits& limits = {});
-DecodeResult decodeMessage(const void* data, std::size_t size, robot_description_t& out,
+/// Defined for transform_t, tf_message_t, joint_state_t, resend_request_t, robot_description_t.
+template <class Message>
+DecodeResult decodeMessage(const void* data, std::size_t size, Message& out,
                            const DecodeLimits& limits = {});
 
 }  // namespace lcmtf
