@@ -435,6 +435,18 @@ TEST(BufferCoreLookup, LatestTimeOverOnlyStaticEdgesHasStampZero) {
   EXPECT_EQ(buffer.getLatestCommonTime("base", "laser"), TimePoint{});
 }
 
+TEST(BufferCoreLookup, LatestTimeLookupFailsWhenTheEdgesShareNoTime) {
+  // a -> b has data only at 1, b -> c only at 5: no time has data on both.
+  BufferCore buffer;
+  put(buffer, "a", "b", at(1), pose({0, 0, 0}, 0, kZ));
+  put(buffer, "b", "c", at(5), pose({0, 0, 0}, 0, kZ));
+  EXPECT_EQ(buffer.getLatestCommonTime("a", "c"), at(1));
+  EXPECT_THROW(buffer.lookupTransform("a", "c", kLatestTime), PastExtrapolationException);
+  EXPECT_FALSE(buffer.canTransform("a", "c", kLatestTime));
+  put(buffer, "a", "b", at(6), pose({0, 0, 0}, 0, kZ));
+  EXPECT_EQ(buffer.lookupTransform("a", "c", kLatestTime).stamp, at(5));
+}
+
 TEST(BufferCoreLookup, LatestCommonTimeIgnoresEdgesAboveTheCommonAncestor) {
   BufferCore buffer;
   put(buffer, "world", "base", at(100), pose({0, 0, 0}, 0, kZ));

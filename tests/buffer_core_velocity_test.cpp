@@ -20,7 +20,7 @@ using lcmtf_test::put;
 using lcmtf_test::putStatic;
 using ::testing::HasSubstr;
 
-constexpr double kTolerance = 1e-10;
+constexpr double kTolerance = 1e-11;
 const Eigen::Vector3d kZ = Eigen::Vector3d::UnitZ();
 
 ::testing::AssertionResult near(const Eigen::Vector3d& actual, const Eigen::Vector3d& expected) {
@@ -65,7 +65,7 @@ TEST_F(RampMotion, LinearAndAngularVelocityEqualTheRampRates) {
 }
 
 TEST_F(RampMotion, AveragingIntervalNeedNotAlignWithSamples) {
-  for (const Duration interval : X) {
+  for (const Duration interval : {Duration(333'333), Duration(1'000), Duration(1'000'000)}) {
     const Velocity velocity = buffer_.lookupVelocity("base", "/odom", at(2.4321), interval);
     EXPECT_TRUE(near(velocity.linear, v)) << interval.count();
     EXPECT_TRUE(near(velocity.angular, w * axis)) << interval.count();

@@ -69,6 +69,9 @@ bool isFinite(const Transform& t) {
   return t.translation.allFinite() && t.rotation.coeffs().allFinite();
 }
 
+// How far from 1 the norm of a unit quaternion computed in double precision may be.
+constexpr double kUnitNormRounding = 1e-12;
+
 std::string edgeName(const TransformStamped& t) {
   return "'" + t.parent_frame + "' -> '" + t.child_frame + "' at " + toString(t.stamp);
 }
@@ -100,28 +103,30 @@ bool BufferCore::Impl::insert(const TransformStamped& transform, const std::stri
   }
 
   if (rejection == InsertRejection::kCount) {
-    const bool normalize = norm != 1.0;
+    // A unit quaternion computed in double precision is often a few ulps off 1: that is not
+    // denormalized input, so it is stored as given and not counted.
+    const bool normalize = std::abs(norm - 1.0) > kUnitNormRounding;
     if (normalize) value.rotation.coeffs() /= norm;
     const std::int64_t stamp = toUtime(transform.stamp);
     ExclusiveLock lock(lock_);
-    const FrameId child_id = addFrame(child);
-    const FrameId parent_id = addFrame(parent);
-    FrameRecord& record = frames_[child_id];
-    if (is_static) {
-      record.cache.setStatic(parent_id, value);
+    // Refuse a sample that is too old before adding any frame, so the refusal changes nothing.
+    const FrameId known_child = idOf(child);
+    if (!is_static && known_child != kNoFrame &&
+        frames_[known_child].cache.isTooOld(stamp, cache_time_)) {
+      rejection = InsertRejection::kOlderThanHistory;
+      reason = edgeName(transform) + " is older than the history kept: the newest sample is at " +
+               toString(fromUtime(frames_[known_child].cache.newest().stamp)) +
+               " and the cache time is " + toString(Duration(cache_time_));
     } else {
-      const detail::InsertOutcome outcome =
-          record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_);
-      if (outcome == detail::InsertOutcome::kTooOld) {
-        rejection = InsertRejection::kOlderThanHistory;
-        reason = edgeName(transform) + " is older than the history kept: the newest sample is at " +
-                 toString(fromUtime(record.cache.newest().stamp)) + " and the cache time is " +
-                 toString(Duration(cache_time_));
-      } else if (outcome == detail::InsertOutcome::kReplaced) {
+      const FrameId child_id = addFrame(child);
+      const FrameId parent_id = addFrame(parent);
+      FrameRecord& record = frames_[child_id];
+      if (is_static) {
+        record.cache.setStatic(parent_id, value);
+      } else if (record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_) ==
+                 detail::InsertOutcome::kReplaced) {
         ++statistics_.replaced;
       }
-    }
-    if (rejection == InsertRejection::kCount) {
       auto [found, added] = authority_ids_.try_emplace(
           authority, static_cast<std::uint32_t>(authorities_.size()) + 1);
       if (added) authorities_.push_back(authority);

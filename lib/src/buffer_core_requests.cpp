@@ -9,7 +9,7 @@ namespace lcmtf {
 TransformableRequestHandle BufferCore::addTransformableRequest(TransformableCallback callback,
                                                                const std::string& target,
                                                                const std::string& source,
-                                                               TimePoint time) {
+                                                               TimePoint time) const {
   if (stripLeadingSlash(target).empty() || stripLeadingSlash(source).empty()) {
     throw InvalidArgumentException("addTransformableRequest: frame names must not be empty");
   }
@@ -23,7 +23,7 @@ TransformableRequestHandle BufferCore::addTransformableRequest(TransformableCall
   return handle;
 }
 
-void BufferCore::cancelTransformableRequest(TransformableRequestHandle handle) {
+void BufferCore::cancelTransformableRequest(TransformableRequestHandle handle) const {
   std::lock_guard<std::mutex> guard(impl_->requests_mutex_);
   impl_->requests_.erase(handle);
   impl_->has_requests_.store(!impl_->requests_.empty(), std::memory_order_release);

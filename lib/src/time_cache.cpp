@@ -45,8 +45,8 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     count_ = 0;
     is_static_ = false;
   }
+  if (isTooOld(sample.stamp, cache_time)) return InsertOutcome::kTooOld;
   if (count_ > 0 && sample.stamp <= newest().stamp) {
-    if (sample.stamp < newest().stamp - cache_time) return InsertOutcome::kTooOld;
     const std::size_t index = indexAtOrBefore(sample.stamp);
     if (index < count_ && at(index).stamp == sample.stamp) {
       slot(index) = sample;

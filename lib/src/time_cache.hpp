@@ -49,6 +49,10 @@ class TimeCache {
   /// Adds a sample in time order (the edge becomes dynamic), pruning samples older than
   /// `cache_time` behind the newest; a sample already older than that window is refused.
   InsertOutcome insert(const EdgeSample& sample, std::int64_t cache_time);
+  /// Whether insert() would refuse a sample at `stamp` as older than the history kept.
+  bool isTooOld(std::int64_t stamp, std::int64_t cache_time) const {
+    return !is_static_ && count_ > 0 && stamp < newest().stamp - cache_time;
+  }
   /// Drops the history of a dynamic edge; a static edge keeps its value.
   void clearHistory();
 

@@ -102,8 +102,9 @@ class BufferCore {
   /// when they can be transformed already.
   TransformableRequestHandle addTransformableRequest(TransformableCallback callback,
                                                      const std::string& target,
-                                                     const std::string& source, TimePoint time);
-  void cancelTransformableRequest(TransformableRequestHandle handle);
+                                                     const std::string& source,
+                                                     TimePoint time) const;
+  void cancelTransformableRequest(TransformableRequestHandle handle) const;
 
   /// Drops all dynamic history; frames, static edges, statistics and requests stay.
   void clear();

@@ -11,13 +11,13 @@ class TransformException : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// A frame that the buffer has never heard of.
+/// A frame that the buffer has never heard of, or a loop in the tree (as tf2 reports it).
 class LookupException : public TransformException {
  public:
   using TransformException::TransformException;
 };
 
-/// Two frames with no common ancestor at the requested time, or a loop in the tree.
+/// Two frames with no common ancestor at the requested time.
 class ConnectivityException : public TransformException {
  public:
   using TransformException::TransformException;
