@@ -292,6 +292,11 @@ FrameHandle BufferCore::findFrame(const std::string& frame) const {
 
 bool BufferCore::frameExists(const std::string& frame) const { return bool(findFrame(frame)); }
 
+std::size_t BufferCore::frameCount() const {
+  SharedLock lock(impl_->lock_);
+  return impl_->frames_.size() - 1;
+}
+
 bool BufferCore::getParent(const std::string& frame, TimePoint time, std::string& parent) const {
   SharedLock lock(impl_->lock_);
   const FrameId id = impl_->idOf(stripLeadingSlash(frame));

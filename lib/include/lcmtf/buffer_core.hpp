@@ -85,6 +85,8 @@ class BufferCore {
   /// The handle of an existing frame, or a null handle.
   FrameHandle findFrame(const std::string& frame) const;
   bool frameExists(const std::string& frame) const;
+  /// How many frames the buffer knows, parents included.
+  std::size_t frameCount() const;
   /// The parent of `frame` at `time`; false when it has none there.
   bool getParent(const std::string& frame, TimePoint time, std::string& parent) const;
   /// Every frame ever seen, parents included, in the order they appeared.

@@ -1,0 +1,90 @@
+#pragma once
+
+#include <atomic>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include "lcmtf/buffer.hpp"
+#include "lcmtf/channels.hpp"
+#include "lcmtf/wire_decode.hpp"
+
+namespace lcmtf {
+
+/// What a TransformListener listens to and what it accepts.
+struct ListenerOptions {
+  std::string lcm_url;  ///< for the listener's own LCM; "" is LCM's default
+  std::string channel = kTfChannel;
+  std::string static_channel = kTfStaticChannel;
+  std::string static_request_channel = kTfStaticRequestChannel;
+  bool static_only = false;                      ///< ignore the dynamic channel
+  std::vector<std::string> allowed_authorities;  ///< empty: accept every sender
+  std::size_t max_frames = 10000;                ///< new frame names beyond this are refused
+  DecodeLimits limits;                           ///< bounds on incoming messages
+  int queue_capacity = 1000;                     ///< messages LCM queues per channel
+  std::string authority = defaultAuthority();    ///< names this listener in its requests
+};
+
+/// What a listener has received and refused since it started.
+struct ListenerStatistics {
+  std::uint64_t messages = 0;             ///< batches decoded and accepted
+  std::uint64_t transforms = 0;           ///< transforms stored in the buffer
+  std::uint64_t malformed = 0;            ///< messages that failed to decode
+  std::uint64_t rejected_transforms = 0;  ///< transforms the buffer refused (see its statistics)
+  std::uint64_t unauthorized = 0;         ///< batches from authorities not allowed
+  std::uint64_t frame_limit = 0;          ///< transforms refused by max_frames
+  std::uint64_t stale_batches = 0;        ///< dropped: older than the cache time behind the newest
+  std::uint64_t history_resets = 0;       ///< time jumped back for good: dynamic history cleared
+};
+
+/// Feeds a Buffer from the TF and TF_STATIC channels, and asks static broadcasters to resend
+/// when it starts. Nothing from the network can crash it or corrupt the buffer: bad input is
+/// counted in statistics() and reported once per kind.
+class TransformListener {
+ public:
+  /// Owns an LCM on options.lcm_url and a thread that handles it.
+  explicit TransformListener(Buffer& buffer, ListenerOptions options = {});
+  /// Subscribes on the application's LCM; the application's handle loop drives the listener.
+  /// `lcm` must outlive the listener.
+  TransformListener(Buffer& buffer, lcm::LCM& lcm, ListenerOptions options = {});
+  ~TransformListener();
+  TransformListener(const TransformListener&) = delete;
+  TransformListener& operator=(const TransformListener&) = delete;
+
+  /// Asks every static broadcaster to resend its set now.
+  void requestStatics();
+  ListenerStatistics statistics() const;
+
+  /// Handles one encoded tf_message_t as if it had arrived on `channel` (replay, tests).
+  void handleMessage(const void* data, std::size_t size, const std::string& channel);
+
+ private:
+  void subscribe();
+  void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+  void handleBatch(const tf_message_t& batch, bool is_static);
+  bool allowed(const std::string& authority) const;
+  bool isStale(const tf_message_t& batch);
+  void report(const std::string& kind, const std::string& message);
+
+  Buffer& buffer_;
+  ListenerOptions options_;
+  std::unique_ptr<lcm::LCM> owned_lcm_;
+  lcm::LCM& lcm_;
+  std::vector<lcm::Subscription*> subscriptions_;
+
+  mutable std::mutex mutex_;  // guards what follows
+  ListenerStatistics statistics_;
+  std::map<std::string, std::int64_t> newest_by_authority_;
+  std::map<std::string, int> stale_in_a_row_;
+  std::map<std::string, bool> reported_;
+
+  std::atomic<bool> stopping_{false};
+  std::thread thread_;
+};
+
+}  // namespace lcmtf

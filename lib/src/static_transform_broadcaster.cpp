@@ -1,0 +1,115 @@
+#include "lcmtf/static_transform_broadcaster.hpp"
+
+#include <stdexcept>
+
+#include "lcmtf/message_conversions.hpp"
+#include "lcmtf/transform_broadcaster.hpp"
+#include "lcmtf/wire_decode.hpp"
+
+namespace lcmtf {
+
+namespace {
+
+// Keeps each published batch well inside one UDP datagram.
+constexpr int kMaxBatchBytes = 60000;
+
+std::unique_ptr<lcm::LCM> openLcm(const std::string& url) {
+  auto lcm = std::make_unique<lcm::LCM>(url);
+  if (!lcm->good()) throw std::runtime_error("cannot open LCM at '" + url + "'");
+  return lcm;
+}
+
+}  // namespace
+
+StaticTransformBroadcaster::StaticTransformBroadcaster(StaticBroadcasterOptions options)
+    : options_(std::move(options)), owned_lcm_(openLcm(options_.lcm_url)), lcm_(*owned_lcm_) {
+  subscription_ = lcm_.subscribe(options_.request_channel, &StaticTransformBroadcaster::onRequest,
+                                 this);
+  thread_ = std::thread([this] { run(); });
+}
+
+StaticTransformBroadcaster::StaticTransformBroadcaster(lcm::LCM& lcm,
+                                                       StaticBroadcasterOptions options)
+    : options_(std::move(options)), lcm_(lcm) {
+  subscription_ = lcm_.subscribe(options_.request_channel, &StaticTransformBroadcaster::onRequest,
+                                 this);
+}
+
+StaticTransformBroadcaster::~StaticTransformBroadcaster() {
+  stopping_ = true;
+  if (thread_.joinable()) thread_.join();
+  if (subscription_) lcm_.unsubscribe(subscription_);
+}
+
+bool StaticTransformBroadcaster::sendTransform(const TransformStamped& transform) {
+  return sendTransform(std::vector<TransformStamped>{transform});
+}
+
+bool StaticTransformBroadcaster::sendTransform(const std::vector<TransformStamped>& transforms) {
+  {
+    std::lock_guard<std::mutex> guard(mutex_);
+    for (const TransformStamped& transform : transforms) {
+      transforms_[transform.child_frame] = transform;
+    }
+  }
+  return publishAll();
+}
+
+std::size_t StaticTransformBroadcaster::size() const {
+  std::lock_guard<std::mutex> guard(mutex_);
+  return transforms_.size();
+}
+
+bool StaticTransformBroadcaster::publishAll() {
+  std::vector<tf_message_t> batches;
+  {
+    std::lock_guard<std::mutex> guard(mutex_);
+    last_published_ = std::chrono::steady_clock::now();
+    if (transforms_.empty()) return true;
+    batches.push_back(makeTfMessage({}, options_.authority));
+    int batch_bytes = batches.back().getEncodedSize();
+    for (const auto& [child, transform] : transforms_) {
+      transform_t message = toMessage(transform);
+      const int bytes = message._getEncodedSizeNoHash();
+      if (batch_bytes + bytes > kMaxBatchBytes && !batches.back().transforms.empty()) {
+        batches.push_back(makeTfMessage({}, options_.authority));
+        batch_bytes = batches.back().getEncodedSize();
+      }
+      batches.back().transforms.push_back(std::move(message));
+      ++batches.back().num_transforms;
+      batch_bytes += bytes;
+    }
+  }
+  bool published = true;
+  for (const tf_message_t& batch : batches) {
+    published = lcm_.publish(options_.channel, &batch) == 0 && published;
+  }
+  return published;
+}
+
+void StaticTransformBroadcaster::resendIfDue() {
+  if (options_.resend_period <= Duration::zero()) return;
+  bool due = false;
+  {
+    std::lock_guard<std::mutex> guard(mutex_);
+    due = std::chrono::steady_clock::now() - last_published_ >= options_.resend_period;
+  }
+  if (due) publishAll();
+}
+
+void StaticTransformBroadcaster::onRequest(const lcm::ReceiveBuffer* buffer,
+                                           const std::string& /*channel*/) {
+  resend_request_t request;
+  if (!decodeMessage(buffer->data, buffer->data_size, request).ok) return;
+  ++requests_answered_;
+  publishAll();
+}
+
+void StaticTransformBroadcaster::run() {
+  while (!stopping_) {
+    lcm_.handleTimeout(20);
+    resendIfDue();
+  }
+}
+
+}  // namespace lcmtf

@@ -1,0 +1,50 @@
+#include "lcmtf/transform_broadcaster.hpp"
+
+#include <stdexcept>
+
+#include "lcmtf/message_conversions.hpp"
+
+namespace lcmtf {
+
+tf_message_t makeTfMessage(const std::vector<TransformStamped>& transforms,
+                           const std::string& authority, TimePoint sent) {
+  tf_message_t message;
+  message.utime = toUtime(sent);
+  message.authority = authority;
+  message.transforms.reserve(transforms.size());
+  for (const TransformStamped& transform : transforms) {
+    message.transforms.push_back(toMessage(transform));
+  }
+  message.num_transforms = static_cast<std::int32_t>(message.transforms.size());
+  return message;
+}
+
+namespace {
+std::unique_ptr<lcm::LCM> openLcm(const std::string& url) {
+  auto lcm = std::make_unique<lcm::LCM>(url);
+  if (!lcm->good()) throw std::runtime_error("cannot open LCM at '" + url + "'");
+  return lcm;
+}
+}  // namespace
+
+TransformBroadcaster::TransformBroadcaster(lcm::LCM& lcm, std::string channel,
+                                           std::string authority)
+    : lcm_(lcm), channel_(std::move(channel)), authority_(std::move(authority)) {}
+
+TransformBroadcaster::TransformBroadcaster(const std::string& lcm_url, std::string channel,
+                                           std::string authority)
+    : owned_lcm_(openLcm(lcm_url)),
+      lcm_(*owned_lcm_),
+      channel_(std::move(channel)),
+      authority_(std::move(authority)) {}
+
+bool TransformBroadcaster::sendTransform(const TransformStamped& transform) {
+  return sendTransform(std::vector<TransformStamped>{transform});
+}
+
+bool TransformBroadcaster::sendTransform(const std::vector<TransformStamped>& transforms) {
+  const tf_message_t message = makeTfMessage(transforms, authority_);
+  return lcm_.publish(channel_, &message) == 0;
+}
+
+}  // namespace lcmtf

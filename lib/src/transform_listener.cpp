@@ -1,0 +1,169 @@
+#include "lcmtf/transform_listener.hpp"
+
+#include <algorithm>
+#include <iostream>
+#include <limits>
+#include <stdexcept>
+
+#include "lcmtf/message_conversions.hpp"
+
+namespace lcmtf {
+
+namespace {
+
+// Batches in a row, from one authority, older than the cache time behind its newest, that
+// make the listener take the jump back as a restart (a log replayed again) and start afresh.
+constexpr int kStaleBatchesBeforeReset = 3;
+
+std::unique_ptr<lcm::LCM> openLcm(const std::string& url) {
+  auto lcm = std::make_unique<lcm::LCM>(url);
+  if (!lcm->good()) throw std::runtime_error("cannot open LCM at '" + url + "'");
+  return lcm;
+}
+
+}  // namespace
+
+TransformListener::TransformListener(Buffer& buffer, ListenerOptions options)
+    : buffer_(buffer),
+      options_(std::move(options)),
+      owned_lcm_(openLcm(options_.lcm_url)),
+      lcm_(*owned_lcm_) {
+  subscribe();
+  thread_ = std::thread([this] {
+    while (!stopping_) lcm_.handleTimeout(50);
+  });
+}
+
+TransformListener::TransformListener(Buffer& buffer, lcm::LCM& lcm, ListenerOptions options)
+    : buffer_(buffer), options_(std::move(options)), lcm_(lcm) {
+  if (!lcm_.good()) throw std::runtime_error("TransformListener: the LCM given is not usable");
+  subscribe();
+}
+
+TransformListener::~TransformListener() {
+  stopping_ = true;
+  if (thread_.joinable()) thread_.join();
+  for (lcm::Subscription* subscription : subscriptions_) lcm_.unsubscribe(subscription);
+}
+
+void TransformListener::subscribe() {
+  std::vector<std::string> channels{options_.static_channel};
+  if (!options_.static_only) channels.push_back(options_.channel);
+  for (const std::string& channel : channels) {
+    lcm::Subscription* subscription =
+        lcm_.subscribe(channel, &TransformListener::onMessage, this);
+    subscription->setQueueCapacity(options_.queue_capacity);
+    subscriptions_.push_back(subscription);
+  }
+  requestStatics();
+}
+
+void TransformListener::requestStatics() {
+  resend_request_t request;
+  request.utime = toUtime(now());
+  request.requester = options_.authority;
+  lcm_.publish(options_.static_request_channel, &request);
+}
+
+ListenerStatistics TransformListener::statistics() const {
+  std::lock_guard<std::mutex> guard(mutex_);
+  return statistics_;
+}
+
+void TransformListener::report(const std::string& kind, const std::string& message) {
+  bool& reported = reported_[kind];
+  if (reported) return;
+  reported = true;
+  std::cerr << "lcmtf listener: " << message << " (reported once; later ones are only counted)\n";
+}
+
+void TransformListener::onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  // Nothing may escape into LCM's C dispatch loop.
+  try {
+    handleMessage(buffer->data, buffer->data_size, channel);
+  } catch (const std::exception& e) {
+    std::lock_guard<std::mutex> guard(mutex_);
+    ++statistics_.malformed;
+    report("exception", "error while handling a message on " + channel + ": " + e.what());
+  } catch (...) {
+    std::lock_guard<std::mutex> guard(mutex_);
+    ++statistics_.malformed;
+    report("exception", "unknown error while handling a message on " + channel);
+  }
+}
+
+void TransformListener::handleMessage(const void* data, std::size_t size,
+                                      const std::string& channel) {
+  tf_message_t batch;
+  const DecodeResult decoded = decodeMessage(data, size, batch, options_.limits);
+  if (!decoded.ok) {
+    std::lock_guard<std::mutex> guard(mutex_);
+    ++statistics_.malformed;
+    report("malformed", "ignored a malformed message on " + channel + ": " + decoded.error);
+    return;
+  }
+  handleBatch(batch, channel == options_.static_channel);
+}
+
+bool TransformListener::allowed(const std::string& authority) const {
+  const auto& allowed = options_.allowed_authorities;
+  return allowed.empty() || std::find(allowed.begin(), allowed.end(), authority) != allowed.end();
+}
+
+bool TransformListener::isStale(const tf_message_t& batch) {
+  if (batch.transforms.empty()) return false;
+  std::int64_t batch_newest = std::numeric_limits<std::int64_t>::min();
+  for (const transform_t& t : batch.transforms) batch_newest = std::max(batch_newest, t.utime);
+  const std::int64_t cache_time = buffer_.cacheTime().count();
+  const auto seen = newest_by_authority_.find(batch.authority);
+  if (seen == newest_by_authority_.end() || batch_newest >= seen->second - cache_time) {
+    newest_by_authority_[batch.authority] =
+        seen == newest_by_authority_.end() ? batch_newest : std::max(seen->second, batch_newest);
+    stale_in_a_row_[batch.authority] = 0;
+    return false;
+  }
+  if (++stale_in_a_row_[batch.authority] < kStaleBatchesBeforeReset) {
+    ++statistics_.stale_batches;
+    return true;
+  }
+  buffer_.clear();
+  newest_by_authority_.clear();
+  stale_in_a_row_.clear();
+  newest_by_authority_[batch.authority] = batch_newest;
+  ++statistics_.history_resets;
+  report("reset", "time jumped back by more than the cache time on '" + batch.authority +
+                      "' (a log restarted?): dynamic history cleared, static transforms kept");
+  return false;
+}
+
+void TransformListener::handleBatch(const tf_message_t& batch, bool is_static) {
+  std::lock_guard<std::mutex> guard(mutex_);
+  if (!allowed(batch.authority)) {
+    ++statistics_.unauthorized;
+    report("unauthorized", "ignored transforms from '" + batch.authority +
+                               "', which is not among the allowed authorities");
+    return;
+  }
+  if (!is_static && isStale(batch)) return;
+  for (const transform_t& message : batch.transforms) {
+    const TransformStamped transform = fromMessage(message);
+    if (buffer_.frameCount() >= options_.max_frames &&
+        (!buffer_.frameExists(transform.child_frame) ||
+         !buffer_.frameExists(transform.parent_frame))) {
+      ++statistics_.frame_limit;
+      report("frame_limit", "refused new frames beyond the limit of " +
+                                std::to_string(options_.max_frames) + " (first: '" +
+                                transform.parent_frame + "' -> '" + transform.child_frame +
+                                "' from '" + batch.authority + "')");
+      continue;
+    }
+    if (buffer_.setTransform(transform, batch.authority, is_static)) {
+      ++statistics_.transforms;
+    } else {
+      ++statistics_.rejected_transforms;
+    }
+  }
+  ++statistics_.messages;
+}
+
+}  // namespace lcmtf
