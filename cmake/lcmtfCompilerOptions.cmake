@@ -11,6 +11,14 @@ if(LCMTF_SANITIZE)
   endif()
 endif()
 
+option(LCMTF_BUILD_FUZZERS "Build the libFuzzer targets (needs clang)" OFF)
+if(LCMTF_BUILD_FUZZERS)
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    message(FATAL_ERROR "LCMTF_BUILD_FUZZERS needs clang: configure with CXX=clang++")
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link)
+endif()
+
 function(lcmtf_strict_warnings target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
     -Wno-sign-conversion -Wnon-virtual-dtor -Wold-style-cast -Werror)

@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev liburdfdom-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   default-jdk-headless libjchart2d-java
+  clang libclang-rt-14-dev
 )
 
 missing=()

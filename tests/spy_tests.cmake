@@ -6,10 +6,6 @@ if(LCMTF_BUILD_JAVA AND LCMTF_TYPES_JAR)
   set(spy_build_dir "${CMAKE_CURRENT_BINARY_DIR}/spy")
   set(spy_launcher "${PROJECT_BINARY_DIR}/bin/lcmtf-spy")
 
-  add_executable(write_sample_messages spy/write_sample_messages.cpp)
-  target_link_libraries(write_sample_messages PRIVATE lcmtf::lcmtf)
-  lcmtf_strict_warnings(write_sample_messages)
-
   set(checker_classes "${spy_build_dir}/classes")
   add_custom_command(OUTPUT "${checker_classes}/SpyDecodesLcmtf.class"
     COMMAND "${Java_JAVAC_EXECUTABLE}" -Xlint:all -Werror --release 8 -cp "${LCM_JAR}"
