@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <limits>
+#include <map>
 #include <random>
 #include <sstream>
 #include <string>
@@ -22,6 +24,7 @@ using lcmtf_test::at;
 using lcmtf_test::axisAngle;
 using lcmtf_test::identical;
 using lcmtf_test::isometry;
+using lcmtf_test::kEpoch;
 using lcmtf_test::near;
 using lcmtf_test::pose;
 using lcmtf_test::put;
@@ -410,6 +413,89 @@ TEST(BufferCoreInsert, OutOfOrderInsertsLandInTimeOrder) {
   }
   EXPECT_EQ(buffer.statistics().replaced, 0u);
   EXPECT_EQ(buffer.statistics().inserted, 21u);
+}
+
+// One edge's history under random traffic, checked against a sorted map that follows the rules:
+// newest sample sets a window of cache_time (inclusive), older samples are refused, a repeated
+// stamp replaces, anything else lands in time order. The stream wraps the history's storage
+// many times, with irregular spacing and late samples.
+TEST(BufferCoreInsert, RandomTrafficMatchesAReferenceHistory) {
+  constexpr std::int64_t kCache = 1'000'000;
+  BufferCore buffer{Duration(kCache)};
+  buffer.setErrorReporter(nullptr);
+  std::map<std::int64_t, double> model;
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> value(-10.0, 10.0);
+  std::int64_t clock = 0;
+  std::uint64_t refused = 0;
+  std::uint64_t replaced = 0;
+
+  const auto check = [&](int queries) {
+    const std::int64_t oldest = model.begin()->first;
+    const std::int64_t newest = model.rbegin()->first;
+    const std::string yaml = buffer.allFramesAsYaml();
+    EXPECT_THAT(yaml, HasSubstr("samples: " + std::to_string(model.size()) + "\n"));
+    EXPECT_THAT(yaml, HasSubstr("oldest_transform: " + toString(kEpoch + Duration(oldest))));
+    EXPECT_THAT(yaml, HasSubstr("most_recent_transform: " + toString(kEpoch + Duration(newest))));
+    std::uniform_int_distribution<std::int64_t> when(oldest - 100'000, newest + 100'000);
+    for (int i = 0; i < queries; ++i) {
+      const std::int64_t t = when(random);
+      const bool inside = t >= oldest && t <= newest;
+      ASSERT_EQ(buffer.canTransform("world", "robot", kEpoch + Duration(t)), inside) << t;
+      if (!inside) continue;
+      const auto after = model.lower_bound(t);
+      double expected = after->second;
+      if (after->first != t) {
+        const auto before = std::prev(after);
+        const double ratio = static_cast<double>(t - before->first) /
+                             static_cast<double>(after->first - before->first);
+        expected = before->second + ratio * (after->second - before->second);
+      }
+      ASSERT_NEAR(
+          buffer.lookupTransform("world", "robot", kEpoch + Duration(t)).transform.translation.x(),
+          expected, kTolerance)
+          << t;
+    }
+    for (const auto& [stamp, x] : model) {
+      ASSERT_EQ(buffer.lookupTransform("world", "robot", kEpoch + Duration(stamp))
+                    .transform.translation.x(),
+                x)
+          << stamp;
+    }
+  };
+
+  for (int i = 1; i <= 4000; ++i) {
+    clock += std::uniform_int_distribution<std::int64_t>(1, 20'000)(random);
+    std::int64_t stamp = clock;
+    const int kind = std::uniform_int_distribution<int>(0, 9)(random);
+    if (kind == 0 && !model.empty()) {  // late, sometimes too late
+      stamp =
+          model.rbegin()->first - std::uniform_int_distribution<std::int64_t>(0, 1'200'000)(random);
+    } else if (kind == 1 && !model.empty()) {  // a repeat of a stored stamp
+      const auto index = std::uniform_int_distribution<std::size_t>(0, model.size() - 1)(random);
+      stamp = std::next(model.begin(), static_cast<std::ptrdiff_t>(index))->first;
+    }
+    const double x = value(random);
+    const bool accept = model.empty() || stamp >= model.rbegin()->first - kCache;
+    ASSERT_EQ(buffer.setTransform(stamped("world", "robot", kEpoch + Duration(stamp),
+                                          Transform({x, 0, 0}, Eigen::Quaterniond::Identity())),
+                                  "test"),
+              accept)
+        << "insert " << i << " at " << stamp;
+    if (!accept) {
+      ++refused;
+      continue;
+    }
+    replaced += model.count(stamp);
+    model[stamp] = x;
+    model.erase(model.begin(), model.lower_bound(model.rbegin()->first - kCache));
+    if (i % 200 == 0) check(50);
+  }
+  check(2000);
+  EXPECT_GT(refused, 0u);
+  EXPECT_GT(replaced, 0u);
+  EXPECT_EQ(buffer.statistics().rejectedCount(InsertRejection::kOlderThanHistory), refused);
+  EXPECT_EQ(buffer.statistics().replaced, replaced);
 }
 
 TEST(BufferCoreInsert, RepeatedStampReplacesTheSampleSilently) {

@@ -119,6 +119,22 @@ TEST_F(TransformableRequests, FiresFailureOnceTheTimeFallsOutOfTheCacheWindow) {
   EXPECT_EQ(calls.size(), 1u);
 }
 
+TEST_F(TransformableRequests, RequestAlreadyOutOfTheWindowFailsFromTheNextInsert) {
+  // Callbacks only ever run from setTransform, so a request that can never succeed is decided
+  // by whatever is inserted next.
+  BufferCore buffer(std::chrono::seconds(1));
+  std::vector<TransformableResult> results;
+  put(buffer, "world", "base", at(5), pose({0, 0, 0}, 0, kZ));
+  ASSERT_NE(
+      buffer.addTransformableRequest([&](auto, const std::string&, const std::string&, TimePoint,
+                                         TransformableResult result) { results.push_back(result); },
+                                     "world", "base", at(3)),
+      0u);
+  EXPECT_TRUE(results.empty());
+  put(buffer, "map", "dock", at(9), pose({0, 0, 0}, 0, kZ));
+  EXPECT_THAT(results, ::testing::ElementsAre(TransformableResult::kFailure));
+}
+
 TEST_F(TransformableRequests, LateSampleInsideTheWindowSatisfiesAPendingRequest) {
   BufferCore buffer(std::chrono::seconds(1));
   std::vector<TransformableResult> results;

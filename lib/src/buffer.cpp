@@ -66,6 +66,7 @@ void Buffer::throwTimeout(const std::string& what, Duration timeout, const std::
 
 TransformStamped Buffer::lookupTransform(const std::string& target, const std::string& source,
                                          TimePoint time, Duration timeout) const {
+  if (timeout <= Duration::zero()) return BufferCore::lookupTransform(target, source, time);
   const SteadyTime deadline = std::chrono::steady_clock::now() + timeout;
   if (waitUntilTransformable(target, source, time, deadline) == WaitOutcome::kTimedOut) {
     std::string why;
@@ -79,6 +80,9 @@ TransformStamped Buffer::lookupTransform(const std::string& target, const std::s
 TransformStamped Buffer::lookupTransform(const std::string& target, TimePoint target_time,
                                          const std::string& source, TimePoint source_time,
                                          const std::string& fixed, Duration timeout) const {
+  if (timeout <= Duration::zero()) {
+    return BufferCore::lookupTransform(target, target_time, source, source_time, fixed);
+  }
   const SteadyTime deadline = std::chrono::steady_clock::now() + timeout;
   for (const auto& [to, from, time] : {std::tuple{fixed, source, source_time},
                                        std::tuple{target, fixed, target_time}}) {

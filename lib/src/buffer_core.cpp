@@ -51,6 +51,18 @@ FrameId BufferCore::Impl::addFrame(std::string_view name) {
   return id;
 }
 
+void BufferCore::Impl::reportCallbackFailure(const std::string& what) {
+  std::function<void(const std::string&)> reporter;
+  {
+    std::lock_guard<std::mutex> guard(reporter_mutex_);
+    if (callback_failure_reported_ || !reporter_) return;
+    callback_failure_reported_ = true;
+    reporter = reporter_;
+  }
+  reporter("a transformable-request callback threw: " + what +
+           " (reported once; the other callbacks still ran)");
+}
+
 void BufferCore::Impl::reportOnce(InsertRejection kind, const std::string& message) {
   std::function<void(const std::string&)> reporter;
   {
@@ -158,7 +170,15 @@ bool BufferCore::setTransform(const TransformStamped& transform, const std::stri
                               bool is_static, std::string* error) {
   const bool stored = impl_->insert(transform, authority, is_static, error);
   if (stored && impl_->has_requests_.load(std::memory_order_acquire)) {
-    for (auto& notify : impl_->collectDecidedRequests()) notify();
+    for (auto& notify : impl_->collectDecidedRequests()) {
+      try {
+        notify();
+      } catch (const std::exception& e) {
+        impl_->reportCallbackFailure(e.what());
+      } catch (...) {
+        impl_->reportCallbackFailure("an exception that is not a std::exception");
+      }
+    }
   }
   return stored;
 }
@@ -167,6 +187,11 @@ namespace {
 
 std::string lookupWhat(const std::string& target, const std::string& source) {
   return "lookup of '" + source + "' in '" + target + "'";
+}
+
+std::string timeTravelWhat(const std::string& target, const std::string& source,
+                           const std::string& fixed) {
+  return "time-travel lookup of '" + source + "' in '" + target + "' through '" + fixed + "'";
 }
 
 // tf2 answers a lookup from a frame to itself with identity without checking the frame.
@@ -217,6 +242,11 @@ TransformStamped BufferCore::lookupTransform(FrameHandle target, FrameHandle sou
 TransformStamped BufferCore::lookupTransform(const std::string& target, TimePoint target_time,
                                              const std::string& source, TimePoint source_time,
                                              const std::string& fixed) const {
+  {
+    SharedLock lock(impl_->lock_);
+    const LookupFailure failure = impl_->resolveAll(target, source, fixed);
+    if (failure) impl_->raise(failure, timeTravelWhat(target, source, fixed));
+  }
   const TransformStamped fixed_T_source = lookupTransform(fixed, source, source_time);
   const TransformStamped target_T_fixed = lookupTransform(target, fixed, target_time);
   return TransformStamped{target_T_fixed.stamp, target_T_fixed.parent_frame,
@@ -256,6 +286,14 @@ bool BufferCore::canTransform(FrameHandle target, FrameHandle source, TimePoint 
 bool BufferCore::canTransform(const std::string& target, TimePoint target_time,
                               const std::string& source, TimePoint source_time,
                               const std::string& fixed, std::string* why) const {
+  {
+    SharedLock lock(impl_->lock_);
+    const LookupFailure failure = impl_->resolveAll(target, source, fixed);
+    if (failure) {
+      if (why) *why = impl_->describe(failure, timeTravelWhat(target, source, fixed));
+      return false;
+    }
+  }
   return canTransform(fixed, source, source_time, why) &&
          canTransform(target, fixed, target_time, why);
 }

@@ -83,12 +83,16 @@ class BufferCore::Impl {
   LookupFailure commonTimeRange(FrameId target, FrameId source, std::int64_t& oldest,
                                 std::int64_t& newest) const;
   LookupFailure resolve(const std::string& name, const char* role, FrameId& id) const;
+  /// The three frames of a time-travel lookup, each named by its role when unknown.
+  LookupFailure resolveAll(const std::string& target, const std::string& source,
+                           const std::string& fixed) const;
   std::string describe(const LookupFailure& failure, const std::string& what) const;
   [[noreturn]] void raise(const LookupFailure& failure, const std::string& what) const;
 
   bool insert(const TransformStamped& transform, const std::string& authority, bool is_static,
               std::string* error);  // exclusive lock
   void reportOnce(InsertRejection kind, const std::string& message);
+  void reportCallbackFailure(const std::string& what);
 
   /// Requests decided by the data now stored; call without lock_ and run them afterwards.
   std::vector<std::function<void()>> collectDecidedRequests();
@@ -105,6 +109,7 @@ class BufferCore::Impl {
   std::mutex reporter_mutex_;
   std::function<void(const std::string&)> reporter_;
   std::array<bool, static_cast<std::size_t>(InsertRejection::kCount)> reported_{};
+  bool callback_failure_reported_ = false;
 
   std::mutex requests_mutex_;
   std::map<TransformableRequestHandle, TransformableRequest> requests_;

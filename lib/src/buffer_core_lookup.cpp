@@ -229,4 +229,13 @@ LookupFailure BufferCore::Impl::resolve(const std::string& name, const char* rol
   return {};
 }
 
+LookupFailure BufferCore::Impl::resolveAll(const std::string& target, const std::string& source,
+                                           const std::string& fixed) const {
+  FrameId id = kNoFrame;
+  LookupFailure failure = resolve(target, "target", id);
+  if (!failure) failure = resolve(source, "source", id);
+  if (!failure) failure = resolve(fixed, "fixed", id);
+  return failure;
+}
+
 }  // namespace lcmtf

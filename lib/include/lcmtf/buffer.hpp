@@ -5,6 +5,7 @@
 #include <string>
 
 #include "lcmtf/buffer_core.hpp"
+#include "lcmtf/do_transform.hpp"
 
 namespace lcmtf {
 
@@ -19,7 +20,8 @@ class Buffer : public BufferCore {
   using BufferCore::canTransform;
   using BufferCore::lookupTransform;
 
-  /// lookupTransform that first waits up to `timeout` for the transform to become available.
+  /// lookupTransform that first waits up to `timeout` for the transform to become available
+  /// (a zero timeout does not wait, and throws what BufferCore::lookupTransform throws).
   TransformStamped lookupTransform(const std::string& target, const std::string& source,
                                    TimePoint time, Duration timeout) const;
   TransformStamped lookupTransform(const std::string& target, TimePoint target_time,
@@ -32,6 +34,22 @@ class Buffer : public BufferCore {
   bool canTransform(const std::string& target, TimePoint target_time, const std::string& source,
                     TimePoint source_time, const std::string& fixed, Duration timeout,
                     std::string* why = nullptr) const;
+
+  /// `in` expressed in `target_frame` at its own stamp, waiting up to `timeout` for the data.
+  template <class T>
+  Stamped<T> transform(const Stamped<T>& in, const std::string& target_frame,
+                       Duration timeout = Duration::zero()) const {
+    return doTransform(in, lookupTransform(target_frame, in.frame_id, in.stamp, timeout));
+  }
+  /// Time travel: `in` through `fixed_frame` (which must not move between the two times) into
+  /// `target_frame` as it was at `target_time`.
+  template <class T>
+  Stamped<T> transform(const Stamped<T>& in, const std::string& target_frame,
+                       TimePoint target_time, const std::string& fixed_frame,
+                       Duration timeout = Duration::zero()) const {
+    return doTransform(in, lookupTransform(target_frame, target_time, in.frame_id, in.stamp,
+                                           fixed_frame, timeout));
+  }
 
   /// The transform once it is available, or the lookup's error (TimeoutException after
   /// `timeout`). The wait runs on its own thread; the future may be dropped at any time.

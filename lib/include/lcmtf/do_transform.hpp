@@ -1,0 +1,60 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "lcmtf/exceptions.hpp"
+#include "lcmtf/geometry_types.hpp"
+#include "lcmtf/stamped.hpp"
+#include "lcmtf/transform_stamped.hpp"
+
+namespace lcmtf {
+
+/// `target_T_source` applied to data given in the source frame; the result is in the target.
+/// Points and clouds are rotated and translated; directions and orientations only rotated.
+Eigen::Vector3d apply(const Transform& target_T_source, const Eigen::Vector3d& point);
+Direction apply(const Transform& target_T_source, const Direction& direction);
+Eigen::Quaterniond apply(const Transform& target_T_source, const Eigen::Quaterniond& rotation);
+Transform apply(const Transform& target_T_source, const Transform& pose);
+Eigen::Isometry3d apply(const Transform& target_T_source, const Eigen::Isometry3d& pose);
+/// Every column is a point; one matrix product for the whole cloud.
+Eigen::Matrix3Xd apply(const Transform& target_T_source, const Eigen::Matrix3Xd& cloud);
+std::vector<Eigen::Vector3d> apply(const Transform& target_T_source,
+                                   const std::vector<Eigen::Vector3d>& cloud);
+/// Angular part rotated; linear part rotated plus the lever arm p x (R w), so the result is
+/// the velocity of the body point at the target frame's origin.
+Twist apply(const Transform& target_T_source, const Twist& twist);
+/// Force rotated; torque rotated plus p x (R f), so it is taken about the target's origin.
+Wrench apply(const Transform& target_T_source, const Wrench& wrench);
+/// Pose composed; covariance rotated into the target frame: J S J^T with J = diag(R, R).
+PoseWithCovariance apply(const Transform& target_T_source, const PoseWithCovariance& pose);
+
+/// Transforms stamped data with a transform from lookupTransform(target, data's frame, ...):
+/// the output carries the transform's parent frame and stamp. Throws
+/// InvalidArgumentException when the data is not in the transform's child frame.
+template <class T>
+void doTransform(const Stamped<T>& in, Stamped<T>& out, const TransformStamped& transform) {
+  const auto bare = [](const std::string& frame) {
+    return frame.empty() || frame.front() != '/' ? frame : frame.substr(1);
+  };
+  if (bare(in.frame_id) != bare(transform.child_frame)) {
+    throw InvalidArgumentException("doTransform: data in frame '" + in.frame_id +
+                                   "' given a transform from frame '" + transform.child_frame +
+                                   "' (into '" + transform.parent_frame + "')");
+  }
+  out.data = apply(transform.transform, in.data);
+  out.frame_id = transform.parent_frame;
+  out.stamp = transform.stamp;
+}
+
+/// The same, returning the result.
+template <class T>
+Stamped<T> doTransform(const Stamped<T>& in, const TransformStamped& transform) {
+  Stamped<T> out;
+  doTransform(in, out, transform);
+  return out;
+}
+
+}  // namespace lcmtf
