@@ -107,8 +107,8 @@ TEST(Buffer, CanTransformWithTimeoutWaitsThenSaysWhy) {
 TEST(Buffer, TimeTravelLookupWaitsForBothHalves) {
   Buffer buffer;
   buffer.setTransform(edge("odom", "base", 1'000'000, 1.0), "test");
-  buffer.setTransform(
-      TransformStamped{TimePoint{}, "base", "camera", Transform::identity()}, "test", true);
+  buffer.setTransform(TransformStamped{TimePoint{}, "base", "camera", Transform::identity()},
+                      "test", true);
   LateInsert late(buffer, edge("odom", "base", 2'000'000, 5.0), 30ms);
   const TransformStamped t = buffer.lookupTransform("base", fromUtime(2'000'000), "camera",
                                                     fromUtime(1'000'000), "odom", 30s);
@@ -119,8 +119,8 @@ TEST(Buffer, TimeTravelLookupWaitsForBothHalves) {
   EXPECT_FALSE(buffer.canTransform("base", fromUtime(9'000'000), "camera", fromUtime(1'000'000),
                                    "odom", 20ms, &why));
   EXPECT_THAT(why, HasSubstr("future"));
-  EXPECT_THROW(buffer.lookupTransform("base", fromUtime(9'000'000), "camera",
-                                      fromUtime(1'000'000), "odom", 20ms),
+  EXPECT_THROW(buffer.lookupTransform("base", fromUtime(9'000'000), "camera", fromUtime(1'000'000),
+                                      "odom", 20ms),
                TimeoutException);
 }
 

@@ -175,7 +175,8 @@ TEST_F(MessageFilterTest, MessagesArrivingFromAnotherThreadAllPass) {
       filter->add({"camera", fromUtime(1'000'000 + label * 10'000), label});
     }
   });
-  for (int i = 0; i <= 50; ++i) buffer.setTransform(edge("map", "camera", 1'000'000 + i * 10'000), "test");
+  for (int i = 0; i <= 50; ++i)
+    buffer.setTransform(edge("map", "camera", 1'000'000 + i * 10'000), "test");
   producer.join();
   ASSERT_TRUE(recorder.waitForEvents(50));
   EXPECT_EQ(recorder.passed().size(), 50u);

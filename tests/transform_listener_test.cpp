@@ -29,8 +29,8 @@ TEST(TransformListener, BroadcastTransformsReachTheBuffer) {
   Buffer buffer;
   TransformListener listener(buffer, lcm);
   TransformBroadcaster broadcaster(lcm, kTfChannel, "test_broadcaster");
-  ASSERT_TRUE(broadcaster.sendTransform({edge("map", "odom", 1'000'000, 1.0),
-                                         edge("odom", "base", 1'000'000, 2.0)}));
+  ASSERT_TRUE(broadcaster.sendTransform(
+      {edge("map", "odom", 1'000'000, 1.0), edge("odom", "base", 1'000'000, 2.0)}));
   drain(lcm);
   EXPECT_EQ(buffer.lookupTransform("map", "base", kLatestTime).transform.translation.x(), 3.0);
   const ListenerStatistics stats = listener.statistics();

@@ -21,8 +21,7 @@ struct WaitState {
 
 std::string lookupWhat(const std::string& target, const std::string& source, TimePoint time) {
   return "a transform of '" + source + "' into '" + target + "' " +
-         (time == kLatestTime ? std::string("at the latest common time")
-                              : "at " + toString(time));
+         (time == kLatestTime ? std::string("at the latest common time") : "at " + toString(time));
 }
 
 }  // namespace
@@ -84,8 +83,8 @@ TransformStamped Buffer::lookupTransform(const std::string& target, TimePoint ta
     return BufferCore::lookupTransform(target, target_time, source, source_time, fixed);
   }
   const SteadyTime deadline = std::chrono::steady_clock::now() + timeout;
-  for (const auto& [to, from, time] : {std::tuple{fixed, source, source_time},
-                                       std::tuple{target, fixed, target_time}}) {
+  for (const auto& [to, from, time] :
+       {std::tuple{fixed, source, source_time}, std::tuple{target, fixed, target_time}}) {
     if (waitUntilTransformable(to, from, time, deadline) == WaitOutcome::kTimedOut) {
       std::string why;
       if (!BufferCore::canTransform(to, from, time, &why)) {
@@ -145,8 +144,7 @@ std::future<TransformStamped> Buffer::waitForTransform(const std::string& target
           return;
         }
         try {
-          throwTimeout(lookupWhat(target, source, time), timeout,
-                       reason.empty() ? why : reason);
+          throwTimeout(lookupWhat(target, source, time), timeout, reason.empty() ? why : reason);
         } catch (...) {
           promise->set_exception(std::current_exception());
         }

@@ -2,27 +2,28 @@
 
 namespace lcmtf {
 
-Eigen::Vector3d apply(const Transform& target_T_source, const Eigen::Vector3d& point) {
+Eigen::Vector3d transformed(const Transform& target_T_source, const Eigen::Vector3d& point) {
   return target_T_source * point;
 }
 
-Direction apply(const Transform& target_T_source, const Direction& direction) {
+Direction transformed(const Transform& target_T_source, const Direction& direction) {
   return Direction{target_T_source.rotate(direction.value)};
 }
 
-Eigen::Quaterniond apply(const Transform& target_T_source, const Eigen::Quaterniond& rotation) {
+Eigen::Quaterniond transformed(const Transform& target_T_source,
+                               const Eigen::Quaterniond& rotation) {
   return target_T_source.rotation * rotation;
 }
 
-Transform apply(const Transform& target_T_source, const Transform& pose) {
+Transform transformed(const Transform& target_T_source, const Transform& pose) {
   return target_T_source * pose;
 }
 
-Eigen::Isometry3d apply(const Transform& target_T_source, const Eigen::Isometry3d& pose) {
+Eigen::Isometry3d transformed(const Transform& target_T_source, const Eigen::Isometry3d& pose) {
   return target_T_source.toIsometry() * pose;
 }
 
-Eigen::Matrix3Xd apply(const Transform& target_T_source, const Eigen::Matrix3Xd& cloud) {
+Eigen::Matrix3Xd transformed(const Transform& target_T_source, const Eigen::Matrix3Xd& cloud) {
   const Eigen::Matrix3d rotation = target_T_source.rotation.toRotationMatrix();
   Eigen::Matrix3Xd result(3, cloud.cols());
   result.noalias() = rotation * cloud;
@@ -30,8 +31,8 @@ Eigen::Matrix3Xd apply(const Transform& target_T_source, const Eigen::Matrix3Xd&
   return result;
 }
 
-std::vector<Eigen::Vector3d> apply(const Transform& target_T_source,
-                                   const std::vector<Eigen::Vector3d>& cloud) {
+std::vector<Eigen::Vector3d> transformed(const Transform& target_T_source,
+                                         const std::vector<Eigen::Vector3d>& cloud) {
   const Eigen::Matrix3d rotation = target_T_source.rotation.toRotationMatrix();
   const Eigen::Vector3d translation = target_T_source.translation;
   std::vector<Eigen::Vector3d> result(cloud.size());
@@ -39,19 +40,19 @@ std::vector<Eigen::Vector3d> apply(const Transform& target_T_source,
   return result;
 }
 
-Twist apply(const Transform& target_T_source, const Twist& twist) {
+Twist transformed(const Transform& target_T_source, const Twist& twist) {
   const Eigen::Vector3d angular = target_T_source.rotate(twist.angular);
   return Twist{target_T_source.rotate(twist.linear) + target_T_source.translation.cross(angular),
                angular};
 }
 
-Wrench apply(const Transform& target_T_source, const Wrench& wrench) {
+Wrench transformed(const Transform& target_T_source, const Wrench& wrench) {
   const Eigen::Vector3d force = target_T_source.rotate(wrench.force);
   return Wrench{force,
                 target_T_source.rotate(wrench.torque) + target_T_source.translation.cross(force)};
 }
 
-PoseWithCovariance apply(const Transform& target_T_source, const PoseWithCovariance& pose) {
+PoseWithCovariance transformed(const Transform& target_T_source, const PoseWithCovariance& pose) {
   const Eigen::Matrix3d rotation = target_T_source.rotation.toRotationMatrix();
   Eigen::Matrix<double, 6, 6> jacobian = Eigen::Matrix<double, 6, 6>::Zero();
   jacobian.topLeftCorner<3, 3>() = rotation;

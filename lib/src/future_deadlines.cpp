@@ -6,8 +6,7 @@ namespace lcmtf::detail {
 
 FutureDeadlines::~FutureDeadlines() { stop("shut down"); }
 
-std::uint64_t FutureDeadlines::add(std::chrono::steady_clock::time_point deadline,
-                                   Expire expire) {
+std::uint64_t FutureDeadlines::add(std::chrono::steady_clock::time_point deadline, Expire expire) {
   std::lock_guard<std::mutex> guard(mutex_);
   const std::uint64_t ticket = next_ticket_++;
   entries_.emplace(ticket, Entry{deadline, std::move(expire), nullptr});

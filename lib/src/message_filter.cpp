@@ -51,9 +51,9 @@ class MessageFilterCore::State : public std::enable_shared_from_this<State> {
       std::lock_guard<std::mutex> guard(mutex);
       if (options.queue_size == 0 || waiting.size() >= options.queue_size) {
         if (!waiting.empty()) {
-          outcomes.push_back(remove(waiting.begin()->first, FilterDropReason::kQueueFull,
-                                    "the queue of " + std::to_string(options.queue_size) +
-                                        " messages was full"));
+          outcomes.push_back(
+              remove(waiting.begin()->first, FilterDropReason::kQueueFull,
+                     "the queue of " + std::to_string(options.queue_size) + " messages was full"));
         } else {
           ++statistics.dropped[static_cast<std::size_t>(FilterDropReason::kQueueFull)];
           outcomes.push_back({id, false, FilterDropReason::kQueueFull, "the queue size is 0"});
@@ -89,9 +89,9 @@ class MessageFilterCore::State : public std::enable_shared_from_this<State> {
       const auto found = waiting.find(id);
       if (found == waiting.end()) return;
       found->second.deadline = 0;
-      outcomes.push_back(remove(id, FilterDropReason::kTimeout,
-                                "not transformable within " + toString(options.timeout) + ": " +
-                                    whyNot(found->second)));
+      outcomes.push_back(remove(
+          id, FilterDropReason::kTimeout,
+          "not transformable within " + toString(options.timeout) + ": " + whyNot(found->second)));
     }
     deliver(outcomes);
   }

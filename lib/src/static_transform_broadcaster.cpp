@@ -23,16 +23,16 @@ std::unique_ptr<lcm::LCM> openLcm(const std::string& url) {
 
 StaticTransformBroadcaster::StaticTransformBroadcaster(StaticBroadcasterOptions options)
     : options_(std::move(options)), owned_lcm_(openLcm(options_.lcm_url)), lcm_(*owned_lcm_) {
-  subscription_ = lcm_.subscribe(options_.request_channel, &StaticTransformBroadcaster::onRequest,
-                                 this);
+  subscription_ =
+      lcm_.subscribe(options_.request_channel, &StaticTransformBroadcaster::onRequest, this);
   thread_ = std::thread([this] { run(); });
 }
 
 StaticTransformBroadcaster::StaticTransformBroadcaster(lcm::LCM& lcm,
                                                        StaticBroadcasterOptions options)
     : options_(std::move(options)), lcm_(lcm) {
-  subscription_ = lcm_.subscribe(options_.request_channel, &StaticTransformBroadcaster::onRequest,
-                                 this);
+  subscription_ =
+      lcm_.subscribe(options_.request_channel, &StaticTransformBroadcaster::onRequest, this);
 }
 
 StaticTransformBroadcaster::~StaticTransformBroadcaster() {

@@ -50,8 +50,7 @@ void TransformListener::subscribe() {
   std::vector<std::string> channels{options_.static_channel};
   if (!options_.static_only) channels.push_back(options_.channel);
   for (const std::string& channel : channels) {
-    lcm::Subscription* subscription =
-        lcm_.subscribe(channel, &TransformListener::onMessage, this);
+    lcm::Subscription* subscription = lcm_.subscribe(channel, &TransformListener::onMessage, this);
     subscription->setQueueCapacity(options_.queue_capacity);
     subscriptions_.push_back(subscription);
   }

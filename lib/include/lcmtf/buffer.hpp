@@ -44,9 +44,8 @@ class Buffer : public BufferCore {
   /// Time travel: `in` through `fixed_frame` (which must not move between the two times) into
   /// `target_frame` as it was at `target_time`.
   template <class T>
-  Stamped<T> transform(const Stamped<T>& in, const std::string& target_frame,
-                       TimePoint target_time, const std::string& fixed_frame,
-                       Duration timeout = Duration::zero()) const {
+  Stamped<T> transform(const Stamped<T>& in, const std::string& target_frame, TimePoint target_time,
+                       const std::string& fixed_frame, Duration timeout = Duration::zero()) const {
     return doTransform(in, lookupTransform(target_frame, target_time, in.frame_id, in.stamp,
                                            fixed_frame, timeout));
   }

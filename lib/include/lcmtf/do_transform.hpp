@@ -14,22 +14,23 @@ namespace lcmtf {
 
 /// `target_T_source` applied to data given in the source frame; the result is in the target.
 /// Points and clouds are rotated and translated; directions and orientations only rotated.
-Eigen::Vector3d apply(const Transform& target_T_source, const Eigen::Vector3d& point);
-Direction apply(const Transform& target_T_source, const Direction& direction);
-Eigen::Quaterniond apply(const Transform& target_T_source, const Eigen::Quaterniond& rotation);
-Transform apply(const Transform& target_T_source, const Transform& pose);
-Eigen::Isometry3d apply(const Transform& target_T_source, const Eigen::Isometry3d& pose);
+Eigen::Vector3d transformed(const Transform& target_T_source, const Eigen::Vector3d& point);
+Direction transformed(const Transform& target_T_source, const Direction& direction);
+Eigen::Quaterniond transformed(const Transform& target_T_source,
+                               const Eigen::Quaterniond& rotation);
+Transform transformed(const Transform& target_T_source, const Transform& pose);
+Eigen::Isometry3d transformed(const Transform& target_T_source, const Eigen::Isometry3d& pose);
 /// Every column is a point; one matrix product for the whole cloud.
-Eigen::Matrix3Xd apply(const Transform& target_T_source, const Eigen::Matrix3Xd& cloud);
-std::vector<Eigen::Vector3d> apply(const Transform& target_T_source,
-                                   const std::vector<Eigen::Vector3d>& cloud);
+Eigen::Matrix3Xd transformed(const Transform& target_T_source, const Eigen::Matrix3Xd& cloud);
+std::vector<Eigen::Vector3d> transformed(const Transform& target_T_source,
+                                         const std::vector<Eigen::Vector3d>& cloud);
 /// Angular part rotated; linear part rotated plus the lever arm p x (R w), so the result is
 /// the velocity of the body point at the target frame's origin.
-Twist apply(const Transform& target_T_source, const Twist& twist);
+Twist transformed(const Transform& target_T_source, const Twist& twist);
 /// Force rotated; torque rotated plus p x (R f), so it is taken about the target's origin.
-Wrench apply(const Transform& target_T_source, const Wrench& wrench);
+Wrench transformed(const Transform& target_T_source, const Wrench& wrench);
 /// Pose composed; covariance rotated into the target frame: J S J^T with J = diag(R, R).
-PoseWithCovariance apply(const Transform& target_T_source, const PoseWithCovariance& pose);
+PoseWithCovariance transformed(const Transform& target_T_source, const PoseWithCovariance& pose);
 
 /// Transforms stamped data with a transform from lookupTransform(target, data's frame, ...):
 /// the output carries the transform's parent frame and stamp. Throws
@@ -44,7 +45,7 @@ void doTransform(const Stamped<T>& in, Stamped<T>& out, const TransformStamped& 
                                    "' given a transform from frame '" + transform.child_frame +
                                    "' (into '" + transform.parent_frame + "')");
   }
-  out.data = apply(transform.transform, in.data);
+  out.data = transformed(transform.transform, in.data);
   out.frame_id = transform.parent_frame;
   out.stamp = transform.stamp;
 }

@@ -25,9 +25,9 @@ const char* describe(FilterDropReason reason);
 
 /// How a MessageFilter waits.
 struct MessageFilterOptions {
-  std::vector<std::string> target_frames;           ///< every one must be reachable
-  std::size_t queue_size = 100;                     ///< messages waiting at most
-  Duration timeout = std::chrono::seconds(1);       ///< zero: wait until the cache drops it
+  std::vector<std::string> target_frames;      ///< every one must be reachable
+  std::size_t queue_size = 100;                ///< messages waiting at most
+  Duration timeout = std::chrono::seconds(1);  ///< zero: wait until the cache drops it
 };
 
 /// What a MessageFilter has done since it was made.
