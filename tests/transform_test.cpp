@@ -156,6 +156,22 @@ TEST(Slerp, MatchesEigenSlerp) {
   }
 }
 
+// The series used for nearby rotations and libm used for distant ones must agree with the
+// closed form on both sides of the switch between them.
+TEST(Slerp, MatchesClosedFormAcrossAllAngles) {
+  const Eigen::Vector3d axis = Eigen::Vector3d(1, -2, 0.5).normalized();
+  const Eigen::Quaterniond a = axisAngle(0.4, Eigen::Vector3d(0, 1, 1));
+  for (double turn = 1e-9; turn < 3.1; turn *= 1.07) {
+    const Eigen::Quaterniond b = axisAngle(turn, axis) * a;
+    for (double ratio : {0.013, 0.25, 0.5, 0.77, 0.999}) {
+      const Eigen::Quaterniond expected = axisAngle(ratio * turn, axis) * a;
+      const Eigen::Quaterniond q = slerp(a, b, ratio);
+      EXPECT_LE(angularDistance(q, expected), 4e-15) << "turn " << turn << " ratio " << ratio;
+      EXPECT_NEAR(q.norm(), 1.0, 1e-15);
+    }
+  }
+}
+
 TEST(Slerp, NearlyIdenticalRotationsStayAccurate) {
   const Eigen::Quaterniond a = axisAngle(1.0, Eigen::Vector3d::UnitX());
   const Eigen::Quaterniond b = axisAngle(1.0 + 1e-11, Eigen::Vector3d::UnitX());

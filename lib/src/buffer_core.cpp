@@ -36,18 +36,17 @@ BufferCore::Impl::Impl(Duration cache_time)
   frames_.emplace_back();  // id 0: no frame
 }
 
-FrameId BufferCore::Impl::idOf(std::string_view name) const {
-  const auto found = ids_.find(name);
-  return found == ids_.end() ? kNoFrame : found->second;
-}
+FrameId BufferCore::Impl::idOf(std::string_view name) const { return ids_.find(name); }
 
 FrameId BufferCore::Impl::addFrame(std::string_view name) {
   const FrameId existing = idOf(name);
   if (existing != kNoFrame) return existing;
   const std::string& stored = names_.emplace_back(name);
   const auto id = static_cast<FrameId>(frames_.size());
-  frames_.emplace_back().name = stored;
-  ids_.emplace(stored, id);
+  FrameRecord& record = frames_.emplace_back();
+  record.name = stored;
+  record.static_top = id;
+  ids_.insert(stored, id);
   return id;
 }
 
@@ -133,11 +132,22 @@ bool BufferCore::Impl::insert(const TransformStamped& transform, const std::stri
       const FrameId child_id = addFrame(child);
       const FrameId parent_id = addFrame(parent);
       FrameRecord& record = frames_[child_id];
+      const bool was_static = record.cache.isStatic();
       if (is_static) {
-        record.cache.setStatic(parent_id, value);
-      } else if (record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_) ==
-                 detail::InsertOutcome::kReplaced) {
-        ++statistics_.replaced;
+        const bool unchanged =
+            was_static && record.cache.at(0).parent == parent_id &&
+            record.cache.at(0).transform.translation == value.translation &&
+            record.cache.at(0).transform.rotation.coeffs() == value.rotation.coeffs();
+        if (!unchanged) {
+          record.cache.setStatic(parent_id, value);
+          updateStaticChains();
+        }
+      } else {
+        if (record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_) ==
+            detail::InsertOutcome::kReplaced) {
+          ++statistics_.replaced;
+        }
+        if (was_static) updateStaticChains();
       }
       auto [found, added] = authority_ids_.try_emplace(
           authority, static_cast<std::uint32_t>(authorities_.size()) + 1);
@@ -376,7 +386,8 @@ std::vector<std::string> BufferCore::getFrameChain(const std::string& target,
   std::int64_t stamp = toUtime(time);
   if (!failure && stamp == 0) failure = impl_->latestCommonTime(target_id, source_id, stamp);
   if (!failure) {
-    failure = impl_->walk(target_id, source_id, stamp, up_from_source, up_from_target, &ancestor);
+    failure =
+        impl_->walk(target_id, source_id, stamp, up_from_source, up_from_target, &ancestor, true);
   }
   if (failure) impl_->raise(failure, "frame chain from '" + source + "' to '" + target + "'");
   std::vector<std::string> chain;

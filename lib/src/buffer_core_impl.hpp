@@ -10,6 +10,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "frame_name_index.hpp"
 #include "lcmtf/buffer_core.hpp"
 #include "read_mostly_lock.hpp"
 #include "time_cache.hpp"
@@ -25,14 +26,21 @@ struct FrameRecord {
   detail::TimeCache cache;
   std::uint32_t authority = 0;
   std::uint64_t authority_conflicts = 0;
+  // The highest frame reached from this one through static edges alone (this frame itself
+  // when its edge is not static), and the static edges between them composed, so a lookup
+  // crosses a chain of static edges in one step.
+  FrameId static_top = kNoFrame;
+  Transform static_top_T_frame;
 };
 
-/// An edge on a lookup's path: the child frame and the samples giving its value.
+/// A step on a lookup's path: one dynamic edge, or a static edge or chain of them.
 struct PathEdge {
   FrameId child = kNoFrame;
   FrameId parent = kNoFrame;
   detail::SampleStatus status = detail::SampleStatus::kOk;
-  detail::SampleSpan span;
+  const Transform* fixed = nullptr;  // the value of a static step
+  detail::SampleSpan span;           // the samples of a dynamic edge
+  bool isDynamic() const { return fixed == nullptr; }
 };
 
 /// Why a lookup failed, kept as data so canTransform pays for no message it does not print.
@@ -74,10 +82,13 @@ class BufferCore::Impl {
   LookupFailure lookup(FrameId target, FrameId source, std::int64_t stamp,
                        TransformStamped* out) const;
   LookupFailure latestCommonTime(FrameId target, FrameId source, std::int64_t& stamp) const;
-  /// The edges from each frame up to their common ancestor at `stamp`.
+  /// The steps from each frame up to their common ancestor at `stamp` (0: the tree as of each
+  /// edge's newest sample); with `whole_chains`, chains of static edges step edge by edge.
   LookupFailure walk(FrameId target, FrameId source, std::int64_t stamp,
                      std::vector<PathEdge>& source_edges, std::vector<PathEdge>& target_edges,
-                     FrameId* ancestor) const;
+                     FrameId* ancestor, bool whole_chains = false) const;
+  /// Recomputes every frame's static_top after a static edge changed (exclusive lock).
+  void updateStaticChains();
   /// The stamps [oldest, newest] at which every dynamic edge between the frames has data, with
   /// the tree as it stands at its newest samples; both zero when every edge is static.
   LookupFailure commonTimeRange(FrameId target, FrameId source, std::int64_t& oldest,
@@ -101,7 +112,7 @@ class BufferCore::Impl {
   const std::int64_t cache_time_;
   std::deque<std::string> names_;  // stable storage behind FrameRecord::name
   std::vector<FrameRecord> frames_;
-  std::unordered_map<std::string_view, FrameId> ids_;
+  detail::FrameNameIndex ids_;
   std::vector<std::string> authorities_;
   std::unordered_map<std::string, std::uint32_t> authority_ids_;
   InsertStatistics statistics_;

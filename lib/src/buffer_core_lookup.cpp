@@ -16,10 +16,8 @@ struct WalkScratch {
   std::uint64_t epoch = 0;
   std::vector<PathEdge> source_edges;
   std::vector<PathEdge> target_edges;
-  std::vector<PathEdge> spare_source;
-  std::vector<PathEdge> spare_target;
 };
-thread_local WalkScratch scratch;
+__attribute__((tls_model("initial-exec"))) thread_local WalkScratch scratch;
 
 // Walks up from `start` for more steps than there are frames to find the frames of the loop.
 std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId start,
@@ -30,25 +28,99 @@ std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId st
     const auto seen = std::find(visited.begin(), visited.end(), frame);
     if (seen != visited.end()) return std::vector<FrameId>(seen, visited.end());
     visited.push_back(frame);
+    const detail::TimeCache& cache = frames[frame].cache;
     SampleStatus status;
-    frame = latest ? (frames[frame].cache.empty() ? kNoFrame : frames[frame].cache.newest().parent)
-                   : frames[frame].cache.parentAt(stamp, status);
+    frame =
+        latest ? (cache.empty() ? kNoFrame : cache.newest().parent) : cache.parentAt(stamp, status);
   }
   return visited;
 }
 
+// The next step up from `frame`: a whole static chain when allowed, else its own edge.
+// Sets edge.parent to kNoFrame at a root.
+void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t stamp,
+            bool whole_chains, PathEdge& edge) {
+  const FrameRecord& record = frames[frame];
+  edge.child = frame;
+  edge.status = SampleStatus::kOk;
+  if (!whole_chains && record.static_top != frame) {
+    edge.parent = record.static_top;
+    edge.fixed = &record.static_top_T_frame;
+    return;
+  }
+  const detail::TimeCache& cache = record.cache;
+  if (cache.isStatic()) {
+    edge.parent = cache.at(0).parent;
+    edge.fixed = &cache.at(0).transform;
+    return;
+  }
+  edge.fixed = nullptr;
+  if (stamp == 0) {
+    edge.parent = cache.newestParent();
+  } else {
+    edge.parent = cache.parentAt(stamp, edge.status);
+  }
+}
+
 Transform composeUp(const std::vector<PathEdge>& edges) {
   Transform ancestor_T_frame;
-  for (const PathEdge& edge : edges) ancestor_T_frame = edge.span.value() * ancestor_T_frame;
+  for (const PathEdge& edge : edges) {
+    ancestor_T_frame = (edge.fixed ? *edge.fixed : edge.span.value()) * ancestor_T_frame;
+  }
   return ancestor_T_frame;
+}
+
+// The first dynamic edge without data at `stamp` as a failure; fills the spans otherwise.
+// A span whose parent is not the one the walk used means the tree was different at `stamp`.
+LookupFailure sampleEdges(const std::vector<FrameRecord>& frames, std::vector<PathEdge>& edges,
+                          std::int64_t stamp, bool* parent_changed) {
+  for (const PathEdge& edge : edges) {
+    if (edge.isDynamic()) frames[edge.child].cache.prefetch(stamp);
+  }
+  for (PathEdge& edge : edges) {
+    if (!edge.isDynamic()) continue;
+    const detail::TimeCache& cache = frames[edge.child].cache;
+    if (edge.status == SampleStatus::kOk) edge.status = cache.find(stamp, edge.span);
+    if (edge.status == SampleStatus::kOk) {
+      if (parent_changed && edge.span.parent() != edge.parent) *parent_changed = true;
+      continue;
+    }
+    LookupFailure failure;
+    failure.kind = edge.status == SampleStatus::kPast ? LookupFailure::Kind::kPast
+                                                      : LookupFailure::Kind::kFuture;
+    failure.edge_child = edge.child;
+    failure.edge_parent = edge.parent;
+    failure.requested = stamp;
+    failure.oldest = cache.oldestStamp();
+    failure.newest = cache.newestStamp();
+    return failure;
+  }
+  return {};
+}
+
+// The newest stamp every dynamic edge of the walk has data at; 0 when all are static.
+std::int64_t commonNewest(const std::vector<FrameRecord>& frames,
+                          const std::vector<PathEdge>& source_edges,
+                          const std::vector<PathEdge>& target_edges) {
+  bool any_dynamic = false;
+  std::int64_t common = 0;
+  for (const auto* edges : {&source_edges, &target_edges}) {
+    for (const PathEdge& edge : *edges) {
+      if (!edge.isDynamic()) continue;
+      const std::int64_t newest = frames[edge.child].cache.newestStamp();
+      common = any_dynamic ? std::min(common, newest) : newest;
+      any_dynamic = true;
+    }
+  }
+  return common;
 }
 
 }  // namespace
 
 LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_t stamp,
                                      std::vector<PathEdge>& source_edges,
-                                     std::vector<PathEdge>& target_edges, FrameId* ancestor) const {
-  const bool latest = stamp == 0;
+                                     std::vector<PathEdge>& target_edges, FrameId* ancestor,
+                                     bool whole_chains) const {
   WalkScratch& s = scratch;
   if (s.visit_epoch.size() < frames_.size()) {
     s.visit_epoch.resize(frames_.size(), 0);
@@ -58,27 +130,19 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
   source_edges.clear();
   target_edges.clear();
   const std::size_t max_depth = frames_.size();
-
-  auto step = [&](FrameId frame, PathEdge& edge) {
-    const detail::TimeCache& cache = frames_[frame].cache;
-    edge.child = frame;
-    if (latest) {
-      edge.status = cache.empty() ? SampleStatus::kEmpty : SampleStatus::kOk;
-      edge.parent = cache.empty() ? kNoFrame : cache.newest().parent;
-    } else {
-      edge.parent = cache.parentAt(stamp, edge.status);
-    }
-  };
   auto loopFailure = [&](FrameId from) {
     LookupFailure failure;
     failure.kind = LookupFailure::Kind::kLoop;
     failure.target = target;
     failure.source = source;
     failure.requested = stamp;
-    failure.loop = findLoop(frames_, from, stamp, latest);
+    failure.loop = findLoop(frames_, from, stamp, stamp == 0);
     return failure;
   };
 
+  // Every frame the source's walk lands on is marked with its place in the walk. Static
+  // chains are crossed in one step, so the target's walk may first meet the source's above
+  // their true common ancestor, but only by static edges, which cancel out when composed.
   FrameId frame = source;
   FrameId source_root = source;
   for (std::size_t depth = 0;; ++depth) {
@@ -90,7 +154,7 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
       return {};
     }
     PathEdge edge;
-    step(frame, edge);
+    stepUp(frames_, frame, stamp, whole_chains, edge);
     if (edge.parent == kNoFrame) {
       source_root = frame;
       break;
@@ -108,7 +172,7 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
       return {};
     }
     PathEdge edge;
-    step(frame, edge);
+    stepUp(frames_, frame, stamp, whole_chains, edge);
     if (edge.parent == kNoFrame) {
       LookupFailure failure;
       failure.kind = LookupFailure::Kind::kNotConnected;
@@ -124,88 +188,66 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
   }
 }
 
-namespace {
-
-// The first edge of the path without data at `stamp`, as a failure; fills the spans otherwise.
-LookupFailure sampleEdges(const std::vector<FrameRecord>& frames, std::vector<PathEdge>& edges,
-                          std::int64_t stamp) {
-  for (PathEdge& edge : edges) {
-    const detail::TimeCache& cache = frames[edge.child].cache;
-    if (edge.status == SampleStatus::kOk) {
-      cache.find(stamp, edge.span);
-      continue;
-    }
-    LookupFailure failure;
-    failure.kind = edge.status == SampleStatus::kPast ? LookupFailure::Kind::kPast
-                                                      : LookupFailure::Kind::kFuture;
-    failure.edge_child = edge.child;
-    failure.edge_parent = edge.parent;
-    failure.requested = stamp;
-    failure.oldest = cache.oldest().stamp;
-    failure.newest = cache.newest().stamp;
-    return failure;
-  }
-  return {};
-}
-
-}  // namespace
-
 LookupFailure BufferCore::Impl::latestCommonTime(FrameId target, FrameId source,
                                                  std::int64_t& stamp) const {
   stamp = 0;
   if (target == source) {
     const detail::TimeCache& cache = frames_[target].cache;
-    if (!cache.empty() && !cache.isStatic()) stamp = cache.newest().stamp;
+    if (!cache.empty() && !cache.isStatic()) stamp = cache.newestStamp();
     return {};
   }
+  std::vector<PathEdge> source_edges;
+  std::vector<PathEdge> target_edges;
   FrameId ancestor = kNoFrame;
-  LookupFailure failure =
-      walk(target, source, 0, scratch.spare_source, scratch.spare_target, &ancestor);
-  if (failure) return failure;
-  bool any_dynamic = false;
-  std::int64_t common = 0;
-  for (const auto* edges : {&scratch.spare_source, &scratch.spare_target}) {
-    for (const PathEdge& edge : *edges) {
-      const detail::TimeCache& cache = frames_[edge.child].cache;
-      if (cache.isStatic()) continue;
-      common = any_dynamic ? std::min(common, cache.newest().stamp) : cache.newest().stamp;
-      any_dynamic = true;
-    }
-  }
-  stamp = common;
-  return {};
+  LookupFailure failure = walk(target, source, 0, source_edges, target_edges, &ancestor);
+  if (!failure) stamp = commonNewest(frames_, source_edges, target_edges);
+  return failure;
 }
 
 LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int64_t stamp,
                                        TransformStamped* out) const {
-  if (stamp == 0) {
-    LookupFailure failure = latestCommonTime(target, source, stamp);
-    if (failure) return failure;
-  }
-  if (target == source) {
-    if (out)
-      *out = TransformStamped{fromUtime(stamp), std::string(nameOf(target)),
-                              std::string(nameOf(source)), Transform::identity()};
-    return {};
-  }
   WalkScratch& s = scratch;
-  FrameId ancestor = kNoFrame;
-  LookupFailure failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor);
-  if (!failure) failure = sampleEdges(frames_, s.source_edges, stamp);
-  if (!failure) failure = sampleEdges(frames_, s.target_edges, stamp);
+  LookupFailure failure;
+  if (target == source) {
+    if (stamp == 0) failure = latestCommonTime(target, source, stamp);
+  } else {
+    FrameId ancestor = kNoFrame;
+    bool parent_changed = false;
+    failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor);
+    if (!failure && stamp == 0) {
+      // The tree as of each edge's newest sample gives the latest common time; if an edge had
+      // another parent at that time, walk the tree as it was then.
+      stamp = commonNewest(frames_, s.source_edges, s.target_edges);
+      if (!(failure = sampleEdges(frames_, s.source_edges, stamp, &parent_changed))) {
+        failure = sampleEdges(frames_, s.target_edges, stamp, &parent_changed);
+      }
+      if (!failure && parent_changed && stamp != 0) {
+        failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor);
+        if (!failure) failure = sampleEdges(frames_, s.source_edges, stamp, nullptr);
+        if (!failure) failure = sampleEdges(frames_, s.target_edges, stamp, nullptr);
+      }
+    } else if (!failure) {
+      failure = sampleEdges(frames_, s.source_edges, stamp, nullptr);
+      if (!failure) failure = sampleEdges(frames_, s.target_edges, stamp, nullptr);
+    }
+  }
   if (failure) {
     failure.target = target;
     failure.source = source;
     return failure;
   }
   if (out) {
-    const Transform ancestor_T_source = composeUp(s.source_edges);
     out->stamp = fromUtime(stamp);
     out->parent_frame.assign(nameOf(target));
     out->child_frame.assign(nameOf(source));
-    out->transform = s.target_edges.empty()
-                         ? ancestor_T_source
-                         : composeUp(s.target_edges).inverse() * ancestor_T_source;
+    if (target == source) {
+      out->transform = Transform::identity();
+    } else {
+      const Transform ancestor_T_source = composeUp(s.source_edges);
+      out->transform = s.target_edges.empty()
+                           ? ancestor_T_source
+                           : composeUp(s.target_edges).inverse() * ancestor_T_source;
+    }
   }
   return {};
 }
@@ -213,20 +255,16 @@ LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int6
 LookupFailure BufferCore::Impl::resolve(const std::string& name, const char* role,
                                         FrameId& id) const {
   const std::string_view stripped = stripLeadingSlash(name);
+  if (!stripped.empty()) {
+    id = idOf(stripped);
+    if (id != kNoFrame) return {};
+  }
   LookupFailure failure;
-  failure.frame = name;
+  failure.kind =
+      stripped.empty() ? LookupFailure::Kind::kInvalidName : LookupFailure::Kind::kUnknownFrame;
+  failure.frame = stripped.empty() ? name : std::string(stripped);
   failure.role = role;
-  if (stripped.empty()) {
-    failure.kind = LookupFailure::Kind::kInvalidName;
-    return failure;
-  }
-  id = idOf(stripped);
-  if (id == kNoFrame) {
-    failure.kind = LookupFailure::Kind::kUnknownFrame;
-    failure.frame = std::string(stripped);
-    return failure;
-  }
-  return {};
+  return failure;
 }
 
 LookupFailure BufferCore::Impl::resolveAll(const std::string& target, const std::string& source,
@@ -236,6 +274,42 @@ LookupFailure BufferCore::Impl::resolveAll(const std::string& target, const std:
   if (!failure) failure = resolve(source, "source", id);
   if (!failure) failure = resolve(fixed, "fixed", id);
   return failure;
+}
+
+void BufferCore::Impl::updateStaticChains() {
+  // Memoized climb: a frame's top is its static parent's top, found before the frame itself.
+  constexpr FrameId kUnknown = static_cast<FrameId>(-1);
+  for (FrameRecord& record : frames_) record.static_top = kUnknown;
+  std::vector<FrameId> pending;
+  for (FrameId start = 1; start < frames_.size(); ++start) {
+    FrameId frame = start;
+    while (frames_[frame].static_top == kUnknown && frames_[frame].cache.isStatic() &&
+           pending.size() <= frames_.size()) {
+      pending.push_back(frame);
+      frame = frames_[frame].cache.at(0).parent;
+    }
+    const bool looped = pending.size() > frames_.size();
+    if (frames_[frame].static_top == kUnknown) {
+      frames_[frame].static_top = frame;
+      frames_[frame].static_top_T_frame = Transform::identity();
+    }
+    // A static loop would never end; frames on it step edge by edge, and lookups report it.
+    for (auto it = pending.rbegin(); it != pending.rend(); ++it) {
+      FrameRecord& record = frames_[*it];
+      if (record.static_top != kUnknown) continue;
+      const detail::EdgeSample& edge = record.cache.at(0);
+      const FrameRecord& parent = frames_[edge.parent];
+      if (looped || parent.static_top == *it) {
+        record.static_top = *it;
+        record.static_top_T_frame = Transform::identity();
+      } else {
+        record.static_top = parent.static_top;
+        record.static_top_T_frame = parent.static_top_T_frame * edge.transform;
+      }
+    }
+    pending.clear();
+  }
+  frames_[kNoFrame].static_top = kNoFrame;
 }
 
 }  // namespace lcmtf

@@ -42,7 +42,7 @@ std::vector<std::function<void()>> BufferCore::Impl::collectDecidedRequests() {
       std::int64_t latest = 0;
       const std::int64_t wanted = toUtime(r.time);
       if (!latestCommonTime(target, source, latest) && latest != 0 && wanted != 0 &&
-          wanted + cache_time_ < latest) {
+          wanted < detail::saturatingSubtract(latest, cache_time_)) {
         result = TransformableResult::kFailure;
       } else if (target == source || !lookup(target, source, wanted, nullptr)) {
         result = TransformableResult::kAvailable;

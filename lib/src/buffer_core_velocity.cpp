@@ -18,8 +18,8 @@ LookupFailure BufferCore::Impl::commonTimeRange(FrameId target, FrameId source,
   bool any_dynamic = false;
   for (const auto* edges : {&source_edges, &target_edges}) {
     for (const PathEdge& edge : *edges) {
+      if (!edge.isDynamic()) continue;
       const detail::TimeCache& cache = frames_[edge.child].cache;
-      if (cache.isStatic()) continue;
       oldest = any_dynamic ? std::max(oldest, cache.oldest().stamp) : cache.oldest().stamp;
       newest = any_dynamic ? std::min(newest, cache.newest().stamp) : cache.newest().stamp;
       any_dynamic = true;

@@ -5,10 +5,16 @@
 namespace lcmtf::detail {
 
 namespace {
+// Initial-exec: a thread-local read on every lock, which must not go through __tls_get_addr.
+constexpr std::size_t kNoSlot = static_cast<std::size_t>(-1);
+__attribute__((tls_model("initial-exec"))) thread_local std::size_t thread_slot = kNoSlot;
+
 std::size_t threadSlotIndex() {
-  static std::atomic<std::size_t> next_thread{0};
-  thread_local const std::size_t index = next_thread.fetch_add(1, std::memory_order_relaxed);
-  return index;
+  if (thread_slot == kNoSlot) {
+    static std::atomic<std::size_t> next_thread{0};
+    thread_slot = next_thread.fetch_add(1, std::memory_order_relaxed);
+  }
+  return thread_slot;
 }
 }  // namespace
 

@@ -23,7 +23,7 @@ class ReadMostlyLock {
   void unlock();
 
  private:
-  static constexpr std::size_t kSlots = 64;
+  static constexpr std::size_t kSlots = 16;
   struct alignas(64) Slot {
     std::atomic<std::size_t> readers{0};
   };

@@ -11,6 +11,19 @@ void TimeCache::setStatic(FrameId parent, const Transform& transform) {
   count_ = 1;
   is_static_ = true;
   parent_changed_at_ = std::numeric_limits<std::int64_t>::min();
+  refreshEnds();
+}
+
+void TimeCache::refreshEnds() {
+  if (count_ == 0) {
+    oldest_stamp_ = newest_stamp_ = 0;
+    oldest_parent_ = newest_parent_ = kNoFrame;
+    return;
+  }
+  oldest_stamp_ = at(0).stamp;
+  oldest_parent_ = at(0).parent;
+  newest_stamp_ = at(count_ - 1).stamp;
+  newest_parent_ = at(count_ - 1).parent;
 }
 
 void TimeCache::clearHistory() {
@@ -18,6 +31,7 @@ void TimeCache::clearHistory() {
   head_ = 0;
   count_ = 0;
   parent_changed_at_ = std::numeric_limits<std::int64_t>::min();
+  refreshEnds();
 }
 
 void TimeCache::noteParentChanges(std::size_t index) {
@@ -51,6 +65,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     if (index < count_ && at(index).stamp == sample.stamp) {
       slot(index) = sample;
       noteParentChanges(index);
+      refreshEnds();
       return InsertOutcome::kReplaced;
     }
     if (count_ == ring_.size()) grow();
@@ -60,33 +75,49 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     slot(insert_at) = sample;
     ++count_;
     noteParentChanges(insert_at);
+    refreshEnds();
     return InsertOutcome::kAdded;
   }
   if (count_ == ring_.size()) grow();
   slot(count_) = sample;
   ++count_;
   noteParentChanges(count_ - 1);
-  const std::int64_t horizon = sample.stamp - cache_time;
+  const std::int64_t horizon = saturatingSubtract(sample.stamp, cache_time);
   while (at(0).stamp < horizon) {
     head_ = (head_ + 1) & mask_;
     --count_;
   }
+  refreshEnds();
   return InsertOutcome::kAdded;
 }
 
-// The index of the newest sample at or before `stamp`, or count_ when every sample is newer.
-// The first guess assumes evenly spaced samples, which holds for most publishers, so the
-// search usually ends within a step or two of it.
-std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp) const {
-  if (stamp < at(0).stamp) return count_;
+// Where `stamp` would be if the samples were evenly spaced, as most publishers space them;
+// for oldest <= stamp < newest.
+std::size_t TimeCache::guessIndex(std::int64_t stamp) const {
   const std::size_t last = count_ - 1;
-  const std::int64_t first_stamp = at(0).stamp;
-  const std::int64_t span = at(last).stamp - first_stamp;
-  if (stamp >= at(last).stamp || span <= 0) return last;
+  const auto guess = static_cast<std::size_t>(static_cast<double>(stamp - oldest_stamp_) /
+                                              static_cast<double>(newest_stamp_ - oldest_stamp_) *
+                                              static_cast<double>(last));
+  return std::min(guess, last - 1);
+}
 
-  auto guess = static_cast<std::size_t>(static_cast<double>(stamp - first_stamp) /
-                                        static_cast<double>(span) * static_cast<double>(last));
-  guess = std::min(guess, last);
+void TimeCache::prefetch(std::int64_t stamp) const {
+  if (is_static_ || count_ < 2 || stamp <= oldest_stamp_ || stamp >= newest_stamp_) return;
+  const std::size_t guess = guessIndex(stamp);
+  __builtin_prefetch(&at(guess));
+  __builtin_prefetch(reinterpret_cast<const char*>(&at(guess)) + sizeof(EdgeSample));
+  __builtin_prefetch(&at(guess + 1));
+  __builtin_prefetch(reinterpret_cast<const char*>(&at(guess + 1)) + sizeof(EdgeSample) - 1);
+}
+
+// The index of the newest sample at or before `stamp`, or count_ when every sample is newer.
+// The guess from even spacing usually ends the search within a step or two.
+std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp) const {
+  if (stamp < oldest_stamp_) return count_;
+  const std::size_t last = count_ - 1;
+  if (stamp >= newest_stamp_ || newest_stamp_ <= oldest_stamp_) return last;
+
+  std::size_t guess = guessIndex(stamp);
   for (int step = 0; step < 3; ++step) {
     if (at(guess).stamp > stamp) {
       --guess;
@@ -118,16 +149,16 @@ FrameId TimeCache::parentAt(std::int64_t stamp, SampleStatus& status) const {
     status = SampleStatus::kEmpty;
     return kNoFrame;
   }
-  if (stamp < at(0).stamp) {
+  if (stamp < oldest_stamp_) {
     status = SampleStatus::kPast;
-    return at(0).parent;
+    return oldest_parent_;
   }
-  if (stamp > at(count_ - 1).stamp) {
+  if (stamp > newest_stamp_) {
     status = SampleStatus::kFuture;
-    return at(count_ - 1).parent;
+    return newest_parent_;
   }
   status = SampleStatus::kOk;
-  if (hasSingleParent()) return at(0).parent;
+  if (hasSingleParent()) return newest_parent_;
   return at(indexAtOrBefore(stamp)).parent;
 }
 
@@ -137,8 +168,8 @@ SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span) const {
     return SampleStatus::kOk;
   }
   if (count_ == 0) return SampleStatus::kEmpty;
-  if (stamp < at(0).stamp) return SampleStatus::kPast;
-  if (stamp > at(count_ - 1).stamp) return SampleStatus::kFuture;
+  if (stamp < oldest_stamp_) return SampleStatus::kPast;
+  if (stamp > newest_stamp_) return SampleStatus::kFuture;
   const std::size_t index = indexAtOrBefore(stamp);
   const EdgeSample& older = at(index);
   if (older.stamp == stamp) {

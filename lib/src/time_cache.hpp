@@ -35,6 +35,14 @@ struct SampleSpan {
 
 enum class InsertOutcome { kAdded, kReplaced, kTooOld };
 
+/// a - b without overflow: clamped to the int64 range (stamps from the network may be anything).
+inline std::int64_t saturatingSubtract(std::int64_t a, std::int64_t b) {
+  using Limits = std::numeric_limits<std::int64_t>;
+  if (b > 0 && a < Limits::min() + b) return Limits::min();
+  if (b < 0 && a > Limits::max() + b) return Limits::max();
+  return a - b;
+}
+
 /// The history of one edge (child frame -> parent) kept in time order in a ring, or a single
 /// static value valid at every time.
 class TimeCache {
@@ -51,13 +59,16 @@ class TimeCache {
   InsertOutcome insert(const EdgeSample& sample, std::int64_t cache_time);
   /// Whether insert() would refuse a sample at `stamp` as older than the history kept.
   bool isTooOld(std::int64_t stamp, std::int64_t cache_time) const {
-    return !is_static_ && count_ > 0 && stamp < newest().stamp - cache_time;
+    return !is_static_ && count_ > 0 && stamp < saturatingSubtract(newest().stamp, cache_time);
   }
   /// Drops the history of a dynamic edge; a static edge keeps its value.
   void clearHistory();
 
   const EdgeSample& oldest() const { return at(0); }
   const EdgeSample& newest() const { return at(count_ - 1); }
+  std::int64_t oldestStamp() const { return oldest_stamp_; }
+  std::int64_t newestStamp() const { return newest_stamp_; }
+  FrameId newestParent() const { return newest_parent_; }
   const EdgeSample& at(std::size_t index) const { return ring_[(head_ + index) & mask_]; }
 
   /// The samples that give the edge's value at `stamp` (any stamp for a static edge).
@@ -65,13 +76,17 @@ class TimeCache {
   /// The parent at `stamp`, whether or not the edge has data there (then its nearest sample's
   /// parent), with the status find() would give; kNoFrame when the edge is empty.
   FrameId parentAt(std::int64_t stamp, SampleStatus& status) const;
+  /// Starts loading the samples find(stamp) will read, so several edges load at once.
+  void prefetch(std::int64_t stamp) const;
 
  private:
   EdgeSample& slot(std::size_t index) { return ring_[(head_ + index) & mask_]; }
   std::size_t indexAtOrBefore(std::int64_t stamp) const;
   void grow();
+  std::size_t guessIndex(std::int64_t stamp) const;
   void noteParentChanges(std::size_t index);
-  bool hasSingleParent() const { return parent_changed_at_ <= at(0).stamp; }
+  void refreshEnds();
+  bool hasSingleParent() const { return parent_changed_at_ <= oldest_stamp_; }
 
   std::vector<EdgeSample> ring_;
   std::size_t mask_ = 0;
@@ -81,6 +96,11 @@ class TimeCache {
   // The newest stamp at which the parent differs from the sample before; samples up to the
   // oldest one all share a parent when this is not newer than the oldest.
   std::int64_t parent_changed_at_ = std::numeric_limits<std::int64_t>::min();
+  // Copies of what lookups read most, so walking the tree touches no sample.
+  std::int64_t oldest_stamp_ = 0;
+  std::int64_t newest_stamp_ = 0;
+  FrameId oldest_parent_ = kNoFrame;
+  FrameId newest_parent_ = kNoFrame;
 };
 
 }  // namespace lcmtf::detail

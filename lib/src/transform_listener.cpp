@@ -21,6 +21,14 @@ std::unique_ptr<lcm::LCM> openLcm(const std::string& url) {
   return lcm;
 }
 
+// a - b clamped to the int64 range: stamps from the network may be anything.
+std::int64_t saturatingSubtract(std::int64_t a, std::int64_t b) {
+  using Limits = std::numeric_limits<std::int64_t>;
+  if (b > 0 && a < Limits::min() + b) return Limits::min();
+  if (b < 0 && a > Limits::max() + b) return Limits::max();
+  return a - b;
+}
+
 }  // namespace
 
 TransformListener::TransformListener(Buffer& buffer, ListenerOptions options)
@@ -109,15 +117,35 @@ bool TransformListener::allowed(const std::string& authority) const {
   return allowed.empty() || std::find(allowed.begin(), allowed.end(), authority) != allowed.end();
 }
 
+std::int64_t TransformListener::newestStored(const tf_message_t& batch) const {
+  std::int64_t newest = std::numeric_limits<std::int64_t>::min();
+  for (const transform_t& t : batch.transforms) {
+    if (!buffer_.frameExists(t.parent_frame) || !buffer_.frameExists(t.child_frame)) continue;
+    try {
+      newest =
+          std::max(newest, toUtime(buffer_.getLatestCommonTime(t.parent_frame, t.child_frame)));
+    } catch (const TransformException&) {  // no data on that edge
+    }
+  }
+  return newest;
+}
+
 bool TransformListener::isStale(const tf_message_t& batch) {
   if (batch.transforms.empty()) return false;
   std::int64_t batch_newest = std::numeric_limits<std::int64_t>::min();
   for (const transform_t& t : batch.transforms) batch_newest = std::max(batch_newest, t.utime);
   const std::int64_t cache_time = buffer_.cacheTime().count();
-  const auto seen = newest_by_authority_.find(batch.authority);
-  if (seen == newest_by_authority_.end() || batch_newest >= seen->second - cache_time) {
-    newest_by_authority_[batch.authority] =
-        seen == newest_by_authority_.end() ? batch_newest : std::max(seen->second, batch_newest);
+  auto seen = newest_by_authority_.find(batch.authority);
+  if (seen == newest_by_authority_.end()) {
+    // A listener that has tracked nobody yet may feed a buffer fed before (a log replayed again
+    // through a new LCM and listener): what the buffer holds on these edges counts as newest.
+    const std::int64_t stored = newest_by_authority_.empty()
+                                    ? newestStored(batch)
+                                    : std::numeric_limits<std::int64_t>::min();
+    seen = newest_by_authority_.emplace(batch.authority, std::max(batch_newest, stored)).first;
+  }
+  if (batch_newest >= saturatingSubtract(seen->second, cache_time)) {
+    seen->second = std::max(seen->second, batch_newest);
     stale_in_a_row_[batch.authority] = 0;
     return false;
   }

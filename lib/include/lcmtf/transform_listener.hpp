@@ -69,6 +69,7 @@ class TransformListener {
   void handleBatch(const tf_message_t& batch, bool is_static);
   bool allowed(const std::string& authority) const;
   bool isStale(const tf_message_t& batch);
+  std::int64_t newestStored(const tf_message_t& batch) const;
   void report(const std::string& kind, const std::string& message);
 
   Buffer& buffer_;
