@@ -50,6 +50,18 @@ FrameId BufferCore::Impl::addFrame(std::string_view name) {
   return id;
 }
 
+std::uint32_t BufferCore::Impl::authorityId(const std::string& authority) {
+  // Most inserts come from the same sender as the one before.
+  if (last_authority_ != 0 && authorities_[last_authority_ - 1] == authority) {
+    return last_authority_;
+  }
+  auto [found, added] =
+      authority_ids_.try_emplace(authority, static_cast<std::uint32_t>(authorities_.size()) + 1);
+  if (added) authorities_.push_back(authority);
+  last_authority_ = found->second;
+  return last_authority_;
+}
+
 void BufferCore::Impl::reportCallbackFailure(const std::string& what) {
   std::function<void(const std::string&)> reporter;
   {
@@ -126,18 +138,18 @@ bool BufferCore::Impl::insert(const TransformStamped& transform, const std::stri
         frames_[known_child].cache.isTooOld(stamp, cache_time_)) {
       rejection = InsertRejection::kOlderThanHistory;
       reason = edgeName(transform) + " is older than the history kept: the newest sample is at " +
-               toString(fromUtime(frames_[known_child].cache.newest().stamp)) +
+               toString(fromUtime(frames_[known_child].cache.newestStamp())) +
                " and the cache time is " + toString(Duration(cache_time_));
     } else {
-      const FrameId child_id = addFrame(child);
+      const FrameId child_id = known_child != kNoFrame ? known_child : addFrame(child);
       const FrameId parent_id = addFrame(parent);
       FrameRecord& record = frames_[child_id];
       const bool was_static = record.cache.isStatic();
       if (is_static) {
         const bool unchanged =
-            was_static && record.cache.at(0).parent == parent_id &&
-            record.cache.at(0).transform.translation == value.translation &&
-            record.cache.at(0).transform.rotation.coeffs() == value.rotation.coeffs();
+            was_static && record.cache.staticValue().parent == parent_id &&
+            record.cache.staticValue().transform.translation == value.translation &&
+            record.cache.staticValue().transform.rotation.coeffs() == value.rotation.coeffs();
         if (!unchanged) {
           record.cache.setStatic(parent_id, value);
           updateStaticChains();
@@ -149,14 +161,12 @@ bool BufferCore::Impl::insert(const TransformStamped& transform, const std::stri
         }
         if (was_static) updateStaticChains();
       }
-      auto [found, added] = authority_ids_.try_emplace(
-          authority, static_cast<std::uint32_t>(authorities_.size()) + 1);
-      if (added) authorities_.push_back(authority);
-      if (record.authority != 0 && record.authority != found->second) {
+      const std::uint32_t authority_id = authorityId(authority);
+      if (record.authority != 0 && record.authority != authority_id) {
         ++record.authority_conflicts;
         ++statistics_.authority_conflicts;
       }
-      record.authority = found->second;
+      record.authority = authority_id;
       ++statistics_.inserted;
       if (normalize) ++statistics_.normalized;
       return true;
@@ -353,7 +363,7 @@ bool BufferCore::getParent(const std::string& frame, TimePoint time, std::string
   detail::SampleStatus status = detail::SampleStatus::kOk;
   FrameId parent_id = kNoFrame;
   if (time == kLatestTime) {
-    parent_id = cache.empty() ? kNoFrame : cache.newest().parent;
+    parent_id = cache.newestParent();
   } else {
     parent_id = cache.parentAt(toUtime(time), status);
   }

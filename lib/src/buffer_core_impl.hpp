@@ -104,6 +104,7 @@ class BufferCore::Impl {
               std::string* error);  // exclusive lock
   void reportOnce(InsertRejection kind, const std::string& message);
   void reportCallbackFailure(const std::string& what);
+  std::uint32_t authorityId(const std::string& authority);  // exclusive lock
 
   /// Requests decided by the data now stored; call without lock_ and run them afterwards.
   std::vector<std::function<void()>> collectDecidedRequests();
@@ -115,6 +116,7 @@ class BufferCore::Impl {
   detail::FrameNameIndex ids_;
   std::vector<std::string> authorities_;
   std::unordered_map<std::string, std::uint32_t> authority_ids_;
+  std::uint32_t last_authority_ = 0;
   InsertStatistics statistics_;
 
   std::mutex reporter_mutex_;

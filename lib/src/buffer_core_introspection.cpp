@@ -22,8 +22,8 @@ EdgeSummary summarize(const detail::TimeCache& cache) {
   summary.is_static = cache.isStatic();
   summary.samples = cache.size();
   if (summary.is_static || cache.empty()) return summary;
-  summary.oldest = cache.oldest().stamp;
-  summary.newest = cache.newest().stamp;
+  summary.oldest = cache.oldestStamp();
+  summary.newest = cache.newestStamp();
   if (summary.samples > 1 && summary.newest > summary.oldest) {
     summary.rate_hz = static_cast<double>(summary.samples - 1) /
                       toSeconds(Duration(summary.newest - summary.oldest));
@@ -65,7 +65,7 @@ std::string BufferCore::allFramesAsYaml() const {
     if (frame.cache.empty()) continue;
     const EdgeSummary edge = summarize(frame.cache);
     yaml << yamlQuoted(frame.name) << ":\n"
-         << "  parent: " << yamlQuoted(impl_->nameOf(frame.cache.newest().parent)) << '\n'
+         << "  parent: " << yamlQuoted(impl_->nameOf(frame.cache.newestParent())) << '\n'
          << "  authority: "
          << yamlQuoted(frame.authority ? impl_->authorities_[frame.authority - 1] : "") << '\n'
          << "  static: " << (edge.is_static ? "true" : "false") << '\n'
@@ -107,7 +107,7 @@ std::string BufferCore::allFramesAsDot() const {
       if (c == '"') escaped_label += '\\';
       escaped_label += c;
     }
-    dot << "  " << dotQuoted(impl_->nameOf(frame.cache.newest().parent)) << " -> "
+    dot << "  " << dotQuoted(impl_->nameOf(frame.cache.newestParent())) << " -> "
         << dotQuoted(frame.name) << " [label=\"" << escaped_label << "\""
         << (edge.is_static ? ", style=dashed" : "") << "];\n";
   }

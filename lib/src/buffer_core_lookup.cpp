@@ -30,8 +30,7 @@ std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId st
     visited.push_back(frame);
     const detail::TimeCache& cache = frames[frame].cache;
     SampleStatus status;
-    frame =
-        latest ? (cache.empty() ? kNoFrame : cache.newest().parent) : cache.parentAt(stamp, status);
+    frame = latest ? cache.newestParent() : cache.parentAt(stamp, status);
   }
   return visited;
 }
@@ -50,8 +49,8 @@ void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t 
   }
   const detail::TimeCache& cache = record.cache;
   if (cache.isStatic()) {
-    edge.parent = cache.at(0).parent;
-    edge.fixed = &cache.at(0).transform;
+    edge.parent = cache.staticValue().parent;
+    edge.fixed = &cache.staticValue().transform;
     return;
   }
   edge.fixed = nullptr;
@@ -286,7 +285,7 @@ void BufferCore::Impl::updateStaticChains() {
     while (frames_[frame].static_top == kUnknown && frames_[frame].cache.isStatic() &&
            pending.size() <= frames_.size()) {
       pending.push_back(frame);
-      frame = frames_[frame].cache.at(0).parent;
+      frame = frames_[frame].cache.staticValue().parent;
     }
     const bool looped = pending.size() > frames_.size();
     if (frames_[frame].static_top == kUnknown) {
@@ -297,7 +296,7 @@ void BufferCore::Impl::updateStaticChains() {
     for (auto it = pending.rbegin(); it != pending.rend(); ++it) {
       FrameRecord& record = frames_[*it];
       if (record.static_top != kUnknown) continue;
-      const detail::EdgeSample& edge = record.cache.at(0);
+      const detail::EdgeValue& edge = record.cache.staticValue();
       const FrameRecord& parent = frames_[edge.parent];
       if (looped || parent.static_top == *it) {
         record.static_top = *it;

@@ -20,8 +20,8 @@ LookupFailure BufferCore::Impl::commonTimeRange(FrameId target, FrameId source,
     for (const PathEdge& edge : *edges) {
       if (!edge.isDynamic()) continue;
       const detail::TimeCache& cache = frames_[edge.child].cache;
-      oldest = any_dynamic ? std::max(oldest, cache.oldest().stamp) : cache.oldest().stamp;
-      newest = any_dynamic ? std::min(newest, cache.newest().stamp) : cache.newest().stamp;
+      oldest = any_dynamic ? std::max(oldest, cache.oldestStamp()) : cache.oldestStamp();
+      newest = any_dynamic ? std::min(newest, cache.newestStamp()) : cache.newestStamp();
       any_dynamic = true;
     }
   }

@@ -5,25 +5,14 @@
 namespace lcmtf::detail {
 
 void TimeCache::setStatic(FrameId parent, const Transform& transform) {
-  ring_.assign(1, EdgeSample{0, parent, transform});
+  stamps_.assign(1, 0);
+  values_.assign(1, EdgeValue{parent, transform});
   mask_ = 0;
   head_ = 0;
   count_ = 1;
   is_static_ = true;
   parent_changed_at_ = std::numeric_limits<std::int64_t>::min();
   refreshEnds();
-}
-
-void TimeCache::refreshEnds() {
-  if (count_ == 0) {
-    oldest_stamp_ = newest_stamp_ = 0;
-    oldest_parent_ = newest_parent_ = kNoFrame;
-    return;
-  }
-  oldest_stamp_ = at(0).stamp;
-  oldest_parent_ = at(0).parent;
-  newest_stamp_ = at(count_ - 1).stamp;
-  newest_parent_ = at(count_ - 1).parent;
 }
 
 void TimeCache::clearHistory() {
@@ -34,56 +23,80 @@ void TimeCache::clearHistory() {
   refreshEnds();
 }
 
-void TimeCache::noteParentChanges(std::size_t index) {
-  if (index > 0 && at(index - 1).parent != at(index).parent) {
-    parent_changed_at_ = std::max(parent_changed_at_, at(index).stamp);
+void TimeCache::refreshEnds() {
+  if (count_ == 0) {
+    oldest_stamp_ = newest_stamp_ = 0;
+    oldest_parent_ = newest_parent_ = kNoFrame;
+    return;
   }
-  if (index + 1 < count_ && at(index + 1).parent != at(index).parent) {
-    parent_changed_at_ = std::max(parent_changed_at_, at(index + 1).stamp);
+  oldest_stamp_ = stampAt(0);
+  oldest_parent_ = valueAt(0).parent;
+  newest_stamp_ = stampAt(count_ - 1);
+  newest_parent_ = valueAt(count_ - 1).parent;
+}
+
+void TimeCache::put(std::size_t index, std::int64_t stamp, const EdgeValue& value) {
+  stamps_[slot(index)] = stamp;
+  values_[slot(index)] = value;
+}
+
+void TimeCache::noteParentChanges(std::size_t index) {
+  if (index > 0 && valueAt(index - 1).parent != valueAt(index).parent) {
+    parent_changed_at_ = std::max(parent_changed_at_, stampAt(index));
+  }
+  if (index + 1 < count_ && valueAt(index + 1).parent != valueAt(index).parent) {
+    parent_changed_at_ = std::max(parent_changed_at_, stampAt(index + 1));
   }
 }
 
 void TimeCache::grow() {
-  const std::size_t new_capacity = std::max<std::size_t>(16, ring_.size() * 2);
-  std::vector<EdgeSample> bigger(new_capacity);
-  for (std::size_t i = 0; i < count_; ++i) bigger[i] = at(i);
-  ring_.swap(bigger);
+  const std::size_t new_capacity = std::max<std::size_t>(16, stamps_.size() * 2);
+  std::vector<std::int64_t> stamps(new_capacity);
+  std::vector<EdgeValue> values(new_capacity);
+  for (std::size_t i = 0; i < count_; ++i) {
+    stamps[i] = stampAt(i);
+    values[i] = valueAt(i);
+  }
+  stamps_.swap(stamps);
+  values_.swap(values);
   mask_ = new_capacity - 1;
   head_ = 0;
 }
 
 InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_time) {
   if (is_static_) {
-    ring_.clear();
+    stamps_.clear();
+    values_.clear();
     mask_ = 0;
     count_ = 0;
     is_static_ = false;
   }
   if (isTooOld(sample.stamp, cache_time)) return InsertOutcome::kTooOld;
-  if (count_ > 0 && sample.stamp <= newest().stamp) {
+  const EdgeValue value{sample.parent, sample.transform};
+  if (count_ > 0 && sample.stamp <= newest_stamp_) {
     const std::size_t index = indexAtOrBefore(sample.stamp);
-    if (index < count_ && at(index).stamp == sample.stamp) {
-      slot(index) = sample;
+    if (index < count_ && stampAt(index) == sample.stamp) {
+      put(index, sample.stamp, value);
       noteParentChanges(index);
       refreshEnds();
       return InsertOutcome::kReplaced;
     }
-    if (count_ == ring_.size()) grow();
+    if (count_ == stamps_.size()) grow();
     // Shift the samples newer than `sample` one place towards the back.
     const std::size_t insert_at = index < count_ ? index + 1 : 0;
-    for (std::size_t i = count_; i > insert_at; --i) slot(i) = at(i - 1);
-    slot(insert_at) = sample;
+    for (std::size_t i = count_; i > insert_at; --i) put(i, stampAt(i - 1), valueAt(i - 1));
+    put(insert_at, sample.stamp, value);
     ++count_;
     noteParentChanges(insert_at);
     refreshEnds();
     return InsertOutcome::kAdded;
   }
-  if (count_ == ring_.size()) grow();
-  slot(count_) = sample;
+  if (count_ == stamps_.size()) grow();
+  put(count_, sample.stamp, value);
   ++count_;
   noteParentChanges(count_ - 1);
   const std::int64_t horizon = saturatingSubtract(sample.stamp, cache_time);
-  while (at(0).stamp < horizon) {
+  while (stampAt(0) < horizon) {
     head_ = (head_ + 1) & mask_;
     --count_;
   }
@@ -104,10 +117,13 @@ std::size_t TimeCache::guessIndex(std::int64_t stamp) const {
 void TimeCache::prefetch(std::int64_t stamp) const {
   if (is_static_ || count_ < 2 || stamp <= oldest_stamp_ || stamp >= newest_stamp_) return;
   const std::size_t guess = guessIndex(stamp);
-  __builtin_prefetch(&at(guess));
-  __builtin_prefetch(reinterpret_cast<const char*>(&at(guess)) + sizeof(EdgeSample));
-  __builtin_prefetch(&at(guess + 1));
-  __builtin_prefetch(reinterpret_cast<const char*>(&at(guess + 1)) + sizeof(EdgeSample) - 1);
+  __builtin_prefetch(&stamps_[slot(guess)]);
+  __builtin_prefetch(&stamps_[slot(guess + 1)]);
+  for (const std::size_t index : {guess, guess + 1}) {
+    const char* value = reinterpret_cast<const char*>(&values_[slot(index)]);
+    __builtin_prefetch(value);
+    __builtin_prefetch(value + sizeof(EdgeValue) - 1);
+  }
 }
 
 // The index of the newest sample at or before `stamp`, or count_ when every sample is newer.
@@ -119,19 +135,19 @@ std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp) const {
 
   std::size_t guess = guessIndex(stamp);
   for (int step = 0; step < 3; ++step) {
-    if (at(guess).stamp > stamp) {
+    if (stampAt(guess) > stamp) {
       --guess;
-    } else if (at(guess + 1).stamp <= stamp) {
+    } else if (stampAt(guess + 1) <= stamp) {
       ++guess;
     } else {
       return guess;
     }
   }
-  std::size_t low = 0;  // at(low) <= stamp < at(high)
+  std::size_t low = 0;  // stampAt(low) <= stamp < stampAt(high)
   std::size_t high = last;
   while (high - low > 1) {
     const std::size_t middle = low + (high - low) / 2;
-    if (at(middle).stamp <= stamp) {
+    if (stampAt(middle) <= stamp) {
       low = middle;
     } else {
       high = middle;
@@ -143,7 +159,7 @@ std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp) const {
 FrameId TimeCache::parentAt(std::int64_t stamp, SampleStatus& status) const {
   if (is_static_) {
     status = SampleStatus::kOk;
-    return ring_[0].parent;
+    return values_[0].parent;
   }
   if (count_ == 0) {
     status = SampleStatus::kEmpty;
@@ -159,31 +175,32 @@ FrameId TimeCache::parentAt(std::int64_t stamp, SampleStatus& status) const {
   }
   status = SampleStatus::kOk;
   if (hasSingleParent()) return newest_parent_;
-  return at(indexAtOrBefore(stamp)).parent;
+  return valueAt(indexAtOrBefore(stamp)).parent;
 }
 
 SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span) const {
   if (is_static_) {
-    span = SampleSpan{&ring_[0], nullptr, 0.0};
+    span = SampleSpan{&values_[0], nullptr, 0.0};
     return SampleStatus::kOk;
   }
   if (count_ == 0) return SampleStatus::kEmpty;
   if (stamp < oldest_stamp_) return SampleStatus::kPast;
   if (stamp > newest_stamp_) return SampleStatus::kFuture;
   const std::size_t index = indexAtOrBefore(stamp);
-  const EdgeSample& older = at(index);
-  if (older.stamp == stamp) {
+  const std::int64_t older_stamp = stampAt(index);
+  const EdgeValue& older = valueAt(index);
+  if (older_stamp == stamp) {
     span = SampleSpan{&older, nullptr, 0.0};
     return SampleStatus::kOk;
   }
-  const EdgeSample& newer = at(index + 1);
+  const EdgeValue& newer = valueAt(index + 1);
   if (newer.parent != older.parent) {
     span = SampleSpan{&older, nullptr, 0.0};
     return SampleStatus::kOk;
   }
-  span = SampleSpan{
-      &older, &newer,
-      static_cast<double>(stamp - older.stamp) / static_cast<double>(newer.stamp - older.stamp)};
+  span = SampleSpan{&older, &newer,
+                    static_cast<double>(stamp - older_stamp) /
+                        static_cast<double>(stampAt(index + 1) - older_stamp)};
   return SampleStatus::kOk;
 }
 

@@ -11,7 +11,13 @@ namespace lcmtf::detail {
 using FrameId = std::uint32_t;
 constexpr FrameId kNoFrame = 0;
 
-/// One stored value of an edge: the pose of the child in `parent` at `stamp` (utime).
+/// An edge's value: the pose of the child in `parent`.
+struct EdgeValue {
+  FrameId parent = kNoFrame;
+  Transform transform;
+};
+
+/// One sample to store: the edge's value at `stamp` (utime).
 struct EdgeSample {
   std::int64_t stamp = 0;
   FrameId parent = kNoFrame;
@@ -24,8 +30,8 @@ enum class SampleStatus { kOk, kEmpty, kPast, kFuture };
 /// The edge's value at a time, as the samples it comes from: `older` alone when exact (or when
 /// the parent changes between the two), else `older` and `newer` mixed by `ratio`.
 struct SampleSpan {
-  const EdgeSample* older = nullptr;
-  const EdgeSample* newer = nullptr;
+  const EdgeValue* older = nullptr;
+  const EdgeValue* newer = nullptr;
   double ratio = 0.0;
   FrameId parent() const { return older->parent; }
   Transform value() const {
@@ -44,13 +50,13 @@ inline std::int64_t saturatingSubtract(std::int64_t a, std::int64_t b) {
 }
 
 /// The history of one edge (child frame -> parent) kept in time order in a ring, or a single
-/// static value valid at every time.
+/// static value valid at every time. Stamps and values live in two parallel rings, so that
+/// searching by time reads 8 bytes a sample and only the two samples used are loaded whole.
 class TimeCache {
  public:
   bool isStatic() const { return is_static_; }
   bool empty() const { return count_ == 0; }
   std::size_t size() const { return count_; }
-  std::size_t capacity() const { return ring_.size(); }
 
   /// Makes the edge static with this value, dropping any history.
   void setStatic(FrameId parent, const Transform& transform);
@@ -59,17 +65,16 @@ class TimeCache {
   InsertOutcome insert(const EdgeSample& sample, std::int64_t cache_time);
   /// Whether insert() would refuse a sample at `stamp` as older than the history kept.
   bool isTooOld(std::int64_t stamp, std::int64_t cache_time) const {
-    return !is_static_ && count_ > 0 && stamp < saturatingSubtract(newest().stamp, cache_time);
+    return !is_static_ && count_ > 0 && stamp < saturatingSubtract(newest_stamp_, cache_time);
   }
   /// Drops the history of a dynamic edge; a static edge keeps its value.
   void clearHistory();
 
-  const EdgeSample& oldest() const { return at(0); }
-  const EdgeSample& newest() const { return at(count_ - 1); }
+  /// The value of a static edge.
+  const EdgeValue& staticValue() const { return values_[0]; }
   std::int64_t oldestStamp() const { return oldest_stamp_; }
   std::int64_t newestStamp() const { return newest_stamp_; }
   FrameId newestParent() const { return newest_parent_; }
-  const EdgeSample& at(std::size_t index) const { return ring_[(head_ + index) & mask_]; }
 
   /// The samples that give the edge's value at `stamp` (any stamp for a static edge).
   SampleStatus find(std::int64_t stamp, SampleSpan& span) const;
@@ -80,15 +85,19 @@ class TimeCache {
   void prefetch(std::int64_t stamp) const;
 
  private:
-  EdgeSample& slot(std::size_t index) { return ring_[(head_ + index) & mask_]; }
+  std::size_t slot(std::size_t index) const { return (head_ + index) & mask_; }
+  std::int64_t stampAt(std::size_t index) const { return stamps_[slot(index)]; }
+  const EdgeValue& valueAt(std::size_t index) const { return values_[slot(index)]; }
+  void put(std::size_t index, std::int64_t stamp, const EdgeValue& value);
   std::size_t indexAtOrBefore(std::int64_t stamp) const;
-  void grow();
   std::size_t guessIndex(std::int64_t stamp) const;
+  void grow();
   void noteParentChanges(std::size_t index);
   void refreshEnds();
   bool hasSingleParent() const { return parent_changed_at_ <= oldest_stamp_; }
 
-  std::vector<EdgeSample> ring_;
+  std::vector<std::int64_t> stamps_;
+  std::vector<EdgeValue> values_;
   std::size_t mask_ = 0;
   std::size_t head_ = 0;
   std::size_t count_ = 0;
