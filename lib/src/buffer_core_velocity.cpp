@@ -55,8 +55,9 @@ Velocity BufferCore::lookupVelocity(const std::string& tracking, const std::stri
   if (all_static) return velocity;
 
   const std::int64_t half = averaging_interval.count() / 2;
-  const std::int64_t start = std::max(centre - half, oldest);
-  const std::int64_t end = std::min(centre + (averaging_interval.count() - half), newest);
+  const std::int64_t start = std::max(detail::saturatingSubtract(centre, half), oldest);
+  const std::int64_t end =
+      std::min(detail::saturatingSubtract(centre, half - averaging_interval.count()), newest);
   if (end <= start) {
     throw ExtrapolationException(what + " at " + toString(fromUtime(centre)) +
                                  ": no data around that time; the edges " +
