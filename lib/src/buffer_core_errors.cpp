@@ -35,9 +35,8 @@ std::string BufferCore::Impl::describe(const LookupFailure& failure,
     case Kind::kPast:
     case Kind::kFuture: {
       const bool past = failure.kind == Kind::kPast;
-      const std::int64_t gap =
-          past ? detail::saturatingSubtract(failure.oldest, failure.requested)
-               : detail::saturatingSubtract(failure.requested, failure.newest);
+      const std::int64_t gap = past ? detail::saturatingSubtract(failure.oldest, failure.requested)
+                                    : detail::saturatingSubtract(failure.requested, failure.newest);
       return what + " " + atTime(failure.requested) + " would need extrapolation into the " +
              (past ? "past" : "future") + ": edge " + quoted(failure.edge_parent) + " -> " +
              quoted(failure.edge_child) + " has data from " + toString(fromUtime(failure.oldest)) +

@@ -40,6 +40,7 @@ struct PathEdge {
   detail::SampleStatus status = detail::SampleStatus::kOk;
   const Transform* fixed = nullptr;  // the value of a static step
   detail::SampleSpan span;           // the samples of a dynamic edge
+  std::size_t hint = detail::TimeCache::kNoHint;
   bool isDynamic() const { return fixed == nullptr; }
 };
 

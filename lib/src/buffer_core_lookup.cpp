@@ -61,10 +61,15 @@ void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t 
   }
 }
 
+// The product of the steps' values, top step first: ancestor_T_frame.
 Transform composeUp(const std::vector<PathEdge>& edges) {
-  Transform ancestor_T_frame;
-  for (const PathEdge& edge : edges) {
-    ancestor_T_frame = (edge.fixed ? *edge.fixed : edge.span.value()) * ancestor_T_frame;
+  if (edges.empty()) return Transform::identity();
+  auto value = [](const PathEdge& edge) { return edge.fixed ? *edge.fixed : edge.span.value(); };
+  Transform ancestor_T_frame = value(edges.front());
+  for (auto edge = edges.begin() + 1; edge != edges.end(); ++edge) {
+    const Transform step = value(*edge);
+    ancestor_T_frame.translation = step.rotation * ancestor_T_frame.translation + step.translation;
+    ancestor_T_frame.rotation = step.rotation * ancestor_T_frame.rotation;
   }
   return ancestor_T_frame;
 }
@@ -73,13 +78,13 @@ Transform composeUp(const std::vector<PathEdge>& edges) {
 // A span whose parent is not the one the walk used means the tree was different at `stamp`.
 LookupFailure sampleEdges(const std::vector<FrameRecord>& frames, std::vector<PathEdge>& edges,
                           std::int64_t stamp, bool* parent_changed) {
-  for (const PathEdge& edge : edges) {
-    if (edge.isDynamic()) frames[edge.child].cache.prefetch(stamp);
+  for (PathEdge& edge : edges) {
+    if (edge.isDynamic()) edge.hint = frames[edge.child].cache.prefetch(stamp);
   }
   for (PathEdge& edge : edges) {
     if (!edge.isDynamic()) continue;
     const detail::TimeCache& cache = frames[edge.child].cache;
-    if (edge.status == SampleStatus::kOk) edge.status = cache.find(stamp, edge.span);
+    if (edge.status == SampleStatus::kOk) edge.status = cache.find(stamp, edge.span, edge.hint);
     if (edge.status == SampleStatus::kOk) {
       if (parent_changed && edge.span.parent() != edge.parent) *parent_changed = true;
       continue;

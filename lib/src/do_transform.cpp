@@ -24,10 +24,13 @@ Eigen::Isometry3d transformed(const Transform& target_T_source, const Eigen::Iso
 }
 
 Eigen::Matrix3Xd transformed(const Transform& target_T_source, const Eigen::Matrix3Xd& cloud) {
+  // One pass over the points, rotation as a matrix: memory, not arithmetic, bounds this.
   const Eigen::Matrix3d rotation = target_T_source.rotation.toRotationMatrix();
+  const Eigen::Vector3d translation = target_T_source.translation;
   Eigen::Matrix3Xd result(3, cloud.cols());
-  result.noalias() = rotation * cloud;
-  result.colwise() += target_T_source.translation;
+  for (Eigen::Index i = 0; i < cloud.cols(); ++i) {
+    result.col(i) = rotation * cloud.col(i) + translation;
+  }
   return result;
 }
 

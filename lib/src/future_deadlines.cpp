@@ -39,8 +39,10 @@ void FutureDeadlines::run() {
       changed_.wait(lock);
       continue;
     }
-    if (std::chrono::steady_clock::now() < earliest->second.deadline) {
-      changed_.wait_until(lock, earliest->second.deadline);
+    // A copy: the entry may be claimed, and erased, while this waits.
+    const std::chrono::steady_clock::time_point deadline = earliest->second.deadline;
+    if (std::chrono::steady_clock::now() < deadline) {
+      changed_.wait_until(lock, deadline);
       continue;
     }
     Entry expired = std::move(earliest->second);

@@ -114,8 +114,10 @@ std::size_t TimeCache::guessIndex(std::int64_t stamp) const {
   return std::min(guess, last - 1);
 }
 
-void TimeCache::prefetch(std::int64_t stamp) const {
-  if (is_static_ || count_ < 2 || stamp <= oldest_stamp_ || stamp >= newest_stamp_) return;
+std::size_t TimeCache::prefetch(std::int64_t stamp) const {
+  if (is_static_ || count_ < 2 || stamp <= oldest_stamp_ || stamp >= newest_stamp_) {
+    return kNoHint;
+  }
   const std::size_t guess = guessIndex(stamp);
   __builtin_prefetch(&stamps_[slot(guess)]);
   __builtin_prefetch(&stamps_[slot(guess + 1)]);
@@ -124,16 +126,17 @@ void TimeCache::prefetch(std::int64_t stamp) const {
     __builtin_prefetch(value);
     __builtin_prefetch(value + sizeof(EdgeValue) - 1);
   }
+  return guess;
 }
 
 // The index of the newest sample at or before `stamp`, or count_ when every sample is newer.
 // The guess from even spacing usually ends the search within a step or two.
-std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp) const {
+std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp, std::size_t hint) const {
   if (stamp < oldest_stamp_) return count_;
   const std::size_t last = count_ - 1;
   if (stamp >= newest_stamp_ || newest_stamp_ <= oldest_stamp_) return last;
 
-  std::size_t guess = guessIndex(stamp);
+  std::size_t guess = hint < last ? hint : guessIndex(stamp);
   for (int step = 0; step < 3; ++step) {
     if (stampAt(guess) > stamp) {
       --guess;
@@ -178,7 +181,7 @@ FrameId TimeCache::parentAt(std::int64_t stamp, SampleStatus& status) const {
   return valueAt(indexAtOrBefore(stamp)).parent;
 }
 
-SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span) const {
+SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span, std::size_t hint) const {
   if (is_static_) {
     span = SampleSpan{&values_[0], nullptr, 0.0};
     return SampleStatus::kOk;
@@ -186,7 +189,7 @@ SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span) const {
   if (count_ == 0) return SampleStatus::kEmpty;
   if (stamp < oldest_stamp_) return SampleStatus::kPast;
   if (stamp > newest_stamp_) return SampleStatus::kFuture;
-  const std::size_t index = indexAtOrBefore(stamp);
+  const std::size_t index = indexAtOrBefore(stamp, hint);
   const std::int64_t older_stamp = stampAt(index);
   const EdgeValue& older = valueAt(index);
   if (older_stamp == stamp) {

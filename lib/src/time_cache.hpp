@@ -77,19 +77,22 @@ class TimeCache {
   FrameId newestParent() const { return newest_parent_; }
 
   /// The samples that give the edge's value at `stamp` (any stamp for a static edge).
-  SampleStatus find(std::int64_t stamp, SampleSpan& span) const;
+  /// `hint` is prefetch()'s answer for the same stamp, when the caller has it.
+  SampleStatus find(std::int64_t stamp, SampleSpan& span, std::size_t hint = kNoHint) const;
   /// The parent at `stamp`, whether or not the edge has data there (then its nearest sample's
   /// parent), with the status find() would give; kNoFrame when the edge is empty.
   FrameId parentAt(std::int64_t stamp, SampleStatus& status) const;
-  /// Starts loading the samples find(stamp) will read, so several edges load at once.
-  void prefetch(std::int64_t stamp) const;
+  /// Starts loading the samples find(stamp) will read, so several edges load at once; returns
+  /// where it guessed they are, as a hint for find().
+  std::size_t prefetch(std::int64_t stamp) const;
+  static constexpr std::size_t kNoHint = static_cast<std::size_t>(-1);
 
  private:
   std::size_t slot(std::size_t index) const { return (head_ + index) & mask_; }
   std::int64_t stampAt(std::size_t index) const { return stamps_[slot(index)]; }
   const EdgeValue& valueAt(std::size_t index) const { return values_[slot(index)]; }
   void put(std::size_t index, std::int64_t stamp, const EdgeValue& value);
-  std::size_t indexAtOrBefore(std::int64_t stamp) const;
+  std::size_t indexAtOrBefore(std::int64_t stamp, std::size_t hint = kNoHint) const;
   std::size_t guessIndex(std::int64_t stamp) const;
   void grow();
   void noteParentChanges(std::size_t index);
