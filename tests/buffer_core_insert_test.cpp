@@ -610,5 +610,50 @@ TEST(BufferCoreInsert, InsertedCountsEveryStoredSampleStaticOnesIncluded) {
   EXPECT_EQ(buffer.statistics().inserted, 3u);
 }
 
+TEST(BufferCoreBatchInsert, StoresTheGoodTransformsAndCountsTheBadOnes) {
+  BufferCore buffer;
+  buffer.setErrorReporter(nullptr);
+  std::vector<TransformStamped> batch{
+      stamped("map", "odom", at(1), pose(Eigen::Vector3d(1, 0, 0), 0.0, Eigen::Vector3d::UnitZ())),
+      stamped("odom", "base", at(1), pose(Eigen::Vector3d(0, 2, 0), 0.0, Eigen::Vector3d::UnitZ())),
+      stamped("base", "base", at(1), pose(Eigen::Vector3d::Zero(), 0.0, Eigen::Vector3d::UnitZ())),
+      stamped("base", "camera", at(1),
+              pose(Eigen::Vector3d(0, 0, 3), 0.0, Eigen::Vector3d::UnitZ()))};
+  batch[3].transform.translation.x() = std::numeric_limits<double>::quiet_NaN();
+  std::string error;
+  EXPECT_EQ(buffer.setTransforms(batch, "batcher", false, &error), 2u);
+  EXPECT_THAT(error, HasSubstr("'base' cannot be its own parent"));
+  EXPECT_EQ(buffer.statistics().inserted, 2u);
+  EXPECT_EQ(buffer.statistics().rejectedCount(InsertRejection::kSelfParented), 1u);
+  EXPECT_EQ(buffer.statistics().rejectedCount(InsertRejection::kNonFinite), 1u);
+  EXPECT_FALSE(buffer.frameExists("camera"));
+  EXPECT_TRUE(buffer.lookupTransform("map", "base", at(1))
+                  .transform.isApprox(pose(Eigen::Vector3d(1, 2, 0), 0.0, Eigen::Vector3d::UnitZ()),
+                                      1e-12));
+}
+
+TEST(BufferCoreBatchInsert, DecidesPendingRequestsOnceTheWholeBatchIsIn) {
+  BufferCore buffer;
+  int calls = 0;
+  bool transformable_when_called = false;
+  buffer.addTransformableRequest(
+      [&](TransformableRequestHandle, const std::string&, const std::string&, TimePoint,
+          TransformableResult result) {
+        ++calls;
+        transformable_when_called =
+            result == TransformableResult::kAvailable && buffer.canTransform("map", "base", at(1));
+      },
+      "map", "base", at(1));
+  EXPECT_EQ(
+      buffer.setTransforms({stamped("map", "odom", at(1),
+                                    pose(Eigen::Vector3d::Zero(), 0.0, Eigen::Vector3d::UnitZ())),
+                            stamped("odom", "base", at(1),
+                                    pose(Eigen::Vector3d::Zero(), 0.0, Eigen::Vector3d::UnitZ()))},
+                           "batcher"),
+      2u);
+  EXPECT_EQ(calls, 1);
+  EXPECT_TRUE(transformable_when_called);
+}
+
 }  // namespace
 }  // namespace lcmtf

@@ -101,85 +101,142 @@ std::string edgeName(const TransformStamped& t) {
 
 }  // namespace
 
-bool BufferCore::Impl::insert(const TransformStamped& transform, const std::string& authority,
-                              bool is_static, std::string* error) {
+InsertRejection BufferCore::Impl::validate(const TransformStamped& transform, Transform& value,
+                                           bool& normalized, std::string& reason) const {
   const std::string_view parent = stripLeadingSlash(transform.parent_frame);
   const std::string_view child = stripLeadingSlash(transform.child_frame);
-  InsertRejection rejection = InsertRejection::kCount;
-  std::string reason;
-  Transform value = transform.transform;
+  value = transform.transform;
   const double norm = value.rotation.norm();
   if (parent.empty() || child.empty()) {
-    rejection = InsertRejection::kEmptyFrameName;
     reason = "empty " + std::string(child.empty() ? "child" : "parent") + " frame name in " +
              edgeName(transform);
-  } else if (parent == child) {
-    rejection = InsertRejection::kSelfParented;
+    return InsertRejection::kEmptyFrameName;
+  }
+  if (parent == child) {
     reason = "frame '" + std::string(child) + "' cannot be its own parent";
-  } else if (!isFinite(value)) {
-    rejection = InsertRejection::kNonFinite;
+    return InsertRejection::kSelfParented;
+  }
+  if (!isFinite(value)) {
     reason = "NaN or infinite value in " + edgeName(transform);
-  } else if (norm == 0.0 || std::abs(norm - 1.0) > 1e-3) {
-    rejection = InsertRejection::kBadQuaternion;
+    return InsertRejection::kNonFinite;
+  }
+  if (norm == 0.0 || std::abs(norm - 1.0) > 1e-3) {
     reason = "quaternion of norm " + std::to_string(norm) + " in " + edgeName(transform) +
              " (must be within 1e-3 of 1)";
+    return InsertRejection::kBadQuaternion;
   }
+  // A unit quaternion computed in double precision is often a few ulps off 1: that is not
+  // denormalized input, so it is stored as given and not counted.
+  normalized = std::abs(norm - 1.0) > kUnitNormRounding;
+  if (normalized) value.rotation.coeffs() /= norm;
+  return InsertRejection::kCount;
+}
 
-  if (rejection == InsertRejection::kCount) {
-    // A unit quaternion computed in double precision is often a few ulps off 1: that is not
-    // denormalized input, so it is stored as given and not counted.
-    const bool normalize = std::abs(norm - 1.0) > kUnitNormRounding;
-    if (normalize) value.rotation.coeffs() /= norm;
-    const std::int64_t stamp = toUtime(transform.stamp);
-    ExclusiveLock lock(lock_);
-    // Refuse a sample that is too old before adding any frame, so the refusal changes nothing.
-    const FrameId known_child = idOf(child);
-    if (!is_static && known_child != kNoFrame &&
-        frames_[known_child].cache.isTooOld(stamp, cache_time_)) {
-      rejection = InsertRejection::kOlderThanHistory;
-      reason = edgeName(transform) + " is older than the history kept: the newest sample is at " +
-               toString(fromUtime(frames_[known_child].cache.newestStamp())) +
-               " and the cache time is " + toString(Duration(cache_time_));
-    } else {
-      const FrameId child_id = known_child != kNoFrame ? known_child : addFrame(child);
-      const FrameId parent_id = addFrame(parent);
-      FrameRecord& record = frames_[child_id];
-      const bool was_static = record.cache.isStatic();
-      if (is_static) {
-        const bool unchanged =
-            was_static && record.cache.staticValue().parent == parent_id &&
-            record.cache.staticValue().transform.translation == value.translation &&
-            record.cache.staticValue().transform.rotation.coeffs() == value.rotation.coeffs();
-        if (!unchanged) {
-          record.cache.setStatic(parent_id, value);
-          updateStaticChains();
-        }
-      } else {
-        if (record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_) ==
-            detail::InsertOutcome::kReplaced) {
-          ++statistics_.replaced;
-        }
-        if (was_static) updateStaticChains();
-      }
-      const std::uint32_t authority_id = authorityId(authority);
-      if (record.authority != 0 && record.authority != authority_id) {
-        ++record.authority_conflicts;
-        ++statistics_.authority_conflicts;
-      }
-      record.authority = authority_id;
-      ++statistics_.inserted;
-      if (normalize) ++statistics_.normalized;
-      return true;
+InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const Transform& value,
+                                        bool normalized, const std::string& authority,
+                                        bool is_static, std::string& reason) {
+  const std::string_view parent = stripLeadingSlash(transform.parent_frame);
+  const std::string_view child = stripLeadingSlash(transform.child_frame);
+  const std::int64_t stamp = toUtime(transform.stamp);
+  // Refuse a sample that is too old before adding any frame, so the refusal changes nothing.
+  const FrameId known_child = idOf(child);
+  if (!is_static && known_child != kNoFrame &&
+      frames_[known_child].cache.isTooOld(stamp, cache_time_)) {
+    reason = edgeName(transform) + " is older than the history kept: the newest sample is at " +
+             toString(fromUtime(frames_[known_child].cache.newestStamp())) +
+             " and the cache time is " + toString(Duration(cache_time_));
+    return InsertRejection::kOlderThanHistory;
+  }
+  const FrameId child_id = known_child != kNoFrame ? known_child : addFrame(child);
+  const FrameId parent_id = addFrame(parent);
+  FrameRecord& record = frames_[child_id];
+  const bool was_static = record.cache.isStatic();
+  if (is_static) {
+    const bool unchanged =
+        was_static && record.cache.staticValue().parent == parent_id &&
+        record.cache.staticValue().transform.translation == value.translation &&
+        record.cache.staticValue().transform.rotation.coeffs() == value.rotation.coeffs();
+    if (!unchanged) {
+      record.cache.setStatic(parent_id, value);
+      updateStaticChains();
     }
+  } else {
+    if (record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_) ==
+        detail::InsertOutcome::kReplaced) {
+      ++statistics_.replaced;
+    }
+    if (was_static) updateStaticChains();
   }
+  const std::uint32_t authority_id = authorityId(authority);
+  if (record.authority != 0 && record.authority != authority_id) {
+    ++record.authority_conflicts;
+    ++statistics_.authority_conflicts;
+  }
+  record.authority = authority_id;
+  ++statistics_.inserted;
+  if (normalized) ++statistics_.normalized;
+  return InsertRejection::kCount;
+}
 
+std::size_t BufferCore::Impl::insert(const TransformStamped* transforms, std::size_t count,
+                                     const std::string& authority, bool is_static,
+                                     std::string* error) {
+  if (count == 1) {
+    Transform value;
+    bool normalized = false;
+    std::string reason;
+    InsertRejection kind = validate(*transforms, value, normalized, reason);
+    {
+      ExclusiveLock lock(lock_);
+      if (kind == InsertRejection::kCount) {
+        kind = store(*transforms, value, normalized, authority, is_static, reason);
+      }
+      if (kind == InsertRejection::kCount) return 1;
+      ++statistics_.rejected[static_cast<std::size_t>(kind)];
+    }
+    reportOnce(kind, "rejected a transform: " + reason);
+    if (error) *error = reason;
+    return 0;
+  }
+  struct Refusal {
+    InsertRejection kind;
+    std::string reason;
+  };
+  std::vector<Refusal> refusals;
+  std::vector<Transform> values(count);
+  std::vector<char> normalized(count, 0);
+  std::vector<char> valid(count, 0);
+  for (std::size_t i = 0; i < count; ++i) {
+    std::string reason;
+    bool normalize = false;
+    const InsertRejection kind = validate(transforms[i], values[i], normalize, reason);
+    normalized[i] = normalize;
+    valid[i] = kind == InsertRejection::kCount;
+    if (!valid[i]) refusals.push_back({kind, std::move(reason)});
+  }
+  std::size_t stored = 0;
   {
     ExclusiveLock lock(lock_);
-    ++statistics_.rejected[static_cast<std::size_t>(rejection)];
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!valid[i]) continue;
+      std::string reason;
+      const InsertRejection kind =
+          store(transforms[i], values[i], normalized[i] != 0, authority, is_static, reason);
+      if (kind == InsertRejection::kCount) {
+        ++stored;
+      } else {
+        refusals.push_back({kind, std::move(reason)});
+      }
+    }
+    for (const Refusal& refusal : refusals) {
+      ++statistics_.rejected[static_cast<std::size_t>(refusal.kind)];
+    }
   }
-  if (error) *error = reason;
-  reportOnce(rejection, "rejected a transform: " + reason);
-  return false;
+  for (const Refusal& refusal : refusals) {
+    reportOnce(refusal.kind, "rejected a transform: " + refusal.reason);
+  }
+  if (error && !refusals.empty()) *error = refusals.front().reason;
+  return stored;
 }
 
 BufferCore::BufferCore(Duration cache_time) : impl_(std::make_unique<Impl>(cache_time)) {}
@@ -188,19 +245,31 @@ BufferCore::~BufferCore() = default;
 
 bool BufferCore::setTransform(const TransformStamped& transform, const std::string& authority,
                               bool is_static, std::string* error) {
-  const bool stored = impl_->insert(transform, authority, is_static, error);
-  if (stored && impl_->has_requests_.load(std::memory_order_acquire)) {
-    for (auto& notify : impl_->collectDecidedRequests()) {
-      try {
-        notify();
-      } catch (const std::exception& e) {
-        impl_->reportCallbackFailure(e.what());
-      } catch (...) {
-        impl_->reportCallbackFailure("an exception that is not a std::exception");
-      }
+  const bool stored = impl_->insert(&transform, 1, authority, is_static, error) == 1;
+  if (stored) impl_->notifyDecidedRequests();
+  return stored;
+}
+
+std::size_t BufferCore::setTransforms(const std::vector<TransformStamped>& transforms,
+                                      const std::string& authority, bool is_static,
+                                      std::string* error) {
+  const std::size_t stored =
+      impl_->insert(transforms.data(), transforms.size(), authority, is_static, error);
+  if (stored > 0) impl_->notifyDecidedRequests();
+  return stored;
+}
+
+void BufferCore::Impl::notifyDecidedRequests() {
+  if (!has_requests_.load(std::memory_order_acquire)) return;
+  for (auto& notify : collectDecidedRequests()) {
+    try {
+      notify();
+    } catch (const std::exception& e) {
+      reportCallbackFailure(e.what());
+    } catch (...) {
+      reportCallbackFailure("an exception that is not a std::exception");
     }
   }
-  return stored;
 }
 
 namespace {

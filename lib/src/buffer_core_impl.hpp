@@ -67,6 +67,8 @@ struct TransformableRequest {
   std::string target;
   std::string source;
   TimePoint time;
+  FrameId target_id = kNoFrame;  // once the frames exist
+  FrameId source_id = kNoFrame;
 };
 
 class BufferCore::Impl {
@@ -101,8 +103,17 @@ class BufferCore::Impl {
   std::string describe(const LookupFailure& failure, const std::string& what) const;
   [[noreturn]] void raise(const LookupFailure& failure, const std::string& what) const;
 
-  bool insert(const TransformStamped& transform, const std::string& authority, bool is_static,
-              std::string* error);  // exclusive lock
+  /// Checks one transform; kCount when it is good, with its rotation normalized in `value`.
+  InsertRejection validate(const TransformStamped& transform, Transform& value, bool& normalized,
+                           std::string& reason) const;
+  /// Stores a validated transform (exclusive lock); kCount when stored.
+  InsertRejection store(const TransformStamped& transform, const Transform& value, bool normalized,
+                        const std::string& authority, bool is_static, std::string& reason);
+  /// Validates and stores `count` transforms under one lock; returns how many were stored.
+  std::size_t insert(const TransformStamped* transforms, std::size_t count,
+                     const std::string& authority, bool is_static, std::string* error);
+  /// Runs the callbacks of the requests decided by the data now stored (no lock held).
+  void notifyDecidedRequests();
   void reportOnce(InsertRejection kind, const std::string& message);
   void reportCallbackFailure(const std::string& what);
   std::uint32_t authorityId(const std::string& authority);  // exclusive lock

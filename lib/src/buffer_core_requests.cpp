@@ -34,18 +34,18 @@ std::vector<std::function<void()>> BufferCore::Impl::collectDecidedRequests() {
   std::lock_guard<std::mutex> guard(requests_mutex_);
   std::shared_lock<detail::ReadMostlyLock> lock(lock_);
   for (auto request = requests_.begin(); request != requests_.end();) {
-    const TransformableRequest& r = request->second;
-    FrameId target = idOf(stripLeadingSlash(r.target));
-    FrameId source = idOf(stripLeadingSlash(r.source));
+    TransformableRequest& r = request->second;
+    if (r.target_id == kNoFrame) r.target_id = idOf(stripLeadingSlash(r.target));
+    if (r.source_id == kNoFrame) r.source_id = idOf(stripLeadingSlash(r.source));
     std::optional<TransformableResult> result;
-    if (target != kNoFrame && source != kNoFrame) {
-      std::int64_t latest = 0;
+    if (r.target_id != kNoFrame && r.source_id != kNoFrame) {
       const std::int64_t wanted = toUtime(r.time);
-      if (!latestCommonTime(target, source, latest) && latest != 0 && wanted != 0 &&
-          wanted < detail::saturatingSubtract(latest, cache_time_)) {
-        result = TransformableResult::kFailure;
-      } else if (target == source || !lookup(target, source, wanted, nullptr)) {
+      std::int64_t latest = 0;
+      if (r.target_id == r.source_id || !lookup(r.target_id, r.source_id, wanted, nullptr)) {
         result = TransformableResult::kAvailable;
+      } else if (wanted != 0 && !latestCommonTime(r.target_id, r.source_id, latest) &&
+                 latest != 0 && wanted < detail::saturatingSubtract(latest, cache_time_)) {
+        result = TransformableResult::kFailure;
       }
     }
     if (!result) {

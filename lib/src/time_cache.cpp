@@ -49,17 +49,27 @@ void TimeCache::noteParentChanges(std::size_t index) {
   }
 }
 
-void TimeCache::grow() {
-  const std::size_t new_capacity = std::max<std::size_t>(16, stamps_.size() * 2);
-  std::vector<std::int64_t> stamps(new_capacity);
-  std::vector<EdgeValue> values(new_capacity);
+// Grows straight to the size the edge's rate so far says a full window needs, so that an edge
+// reaches its working size after one small copy rather than a series of doublings (whose last
+// copies, of every busy edge at once, stall a listener).
+void TimeCache::grow(std::int64_t cache_time) {
+  constexpr std::size_t kLargestJump = std::size_t{1} << 16;
+  std::size_t wanted = std::max<std::size_t>(16, stamps_.size() * 2);
+  if (count_ >= 2 && newest_stamp_ > oldest_stamp_ && cache_time > 0) {
+    const double window_samples = static_cast<double>(count_) * static_cast<double>(cache_time) /
+                                  static_cast<double>(newest_stamp_ - oldest_stamp_);
+    const double with_margin = std::min(1.25 * window_samples + 16.0, double(kLargestJump));
+    while (static_cast<double>(wanted) < with_margin) wanted *= 2;
+  }
+  std::vector<std::int64_t> stamps(wanted);
+  std::vector<EdgeValue> values(wanted);
   for (std::size_t i = 0; i < count_; ++i) {
     stamps[i] = stampAt(i);
     values[i] = valueAt(i);
   }
   stamps_.swap(stamps);
   values_.swap(values);
-  mask_ = new_capacity - 1;
+  mask_ = wanted - 1;
   head_ = 0;
 }
 
@@ -81,7 +91,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
       refreshEnds();
       return InsertOutcome::kReplaced;
     }
-    if (count_ == stamps_.size()) grow();
+    if (count_ == stamps_.size()) grow(cache_time);
     // Shift the samples newer than `sample` one place towards the back.
     const std::size_t insert_at = index < count_ ? index + 1 : 0;
     for (std::size_t i = count_; i > insert_at; --i) put(i, stampAt(i - 1), valueAt(i - 1));
@@ -91,7 +101,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     refreshEnds();
     return InsertOutcome::kAdded;
   }
-  if (count_ == stamps_.size()) grow();
+  if (count_ == stamps_.size()) grow(cache_time);
   put(count_, sample.stamp, value);
   ++count_;
   noteParentChanges(count_ - 1);

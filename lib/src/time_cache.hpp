@@ -94,7 +94,7 @@ class TimeCache {
   void put(std::size_t index, std::int64_t stamp, const EdgeValue& value);
   std::size_t indexAtOrBefore(std::int64_t stamp, std::size_t hint = kNoHint) const;
   std::size_t guessIndex(std::int64_t stamp) const;
-  void grow();
+  void grow(std::int64_t cache_time);
   void noteParentChanges(std::size_t index);
   void refreshEnds();
   bool hasSingleParent() const { return parent_changed_at_ <= oldest_stamp_; }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iostream>
 #include <limits>
+#include <set>
 #include <stdexcept>
 
 #include "lcmtf/message_conversions.hpp"
@@ -164,7 +165,7 @@ bool TransformListener::isStale(const tf_message_t& batch) {
 }
 
 void TransformListener::handleBatch(const tf_message_t& batch, bool is_static) {
-  std::lock_guard<std::mutex> guard(mutex_);
+  std::unique_lock<std::mutex> lock(mutex_);
   if (!allowed(batch.authority)) {
     ++statistics_.unauthorized;
     report("unauthorized", "ignored transforms from '" + batch.authority +
@@ -172,11 +173,22 @@ void TransformListener::handleBatch(const tf_message_t& batch, bool is_static) {
     return;
   }
   if (!is_static && isStale(batch)) return;
+  // Frames this batch would add, so that the limit holds for the batch as a whole.
+  std::size_t frames = buffer_.frameCount();
+  std::set<std::string> added;
+  auto isNew = [&](const std::string& name) {
+    const std::string bare = !name.empty() && name.front() == '/' ? name.substr(1) : name;
+    return !added.count(bare) && !buffer_.frameExists(bare);
+  };
+  std::vector<TransformStamped> accepted;
+  accepted.reserve(batch.transforms.size());
   for (const transform_t& message : batch.transforms) {
-    const TransformStamped transform = fromMessage(message);
-    if (buffer_.frameCount() >= options_.max_frames &&
-        (!buffer_.frameExists(transform.child_frame) ||
-         !buffer_.frameExists(transform.parent_frame))) {
+    TransformStamped transform = fromMessage(message);
+    const bool new_child = isNew(transform.child_frame);
+    const bool new_parent =
+        transform.parent_frame != transform.child_frame && isNew(transform.parent_frame);
+    const std::size_t new_frames = std::size_t{new_child} + std::size_t{new_parent};
+    if (new_frames > 0 && frames + new_frames > options_.max_frames) {
       ++statistics_.frame_limit;
       report("frame_limit", "refused new frames beyond the limit of " +
                                 std::to_string(options_.max_frames) + " (first: '" +
@@ -184,12 +196,18 @@ void TransformListener::handleBatch(const tf_message_t& batch, bool is_static) {
                                 "' from '" + batch.authority + "')");
       continue;
     }
-    if (buffer_.setTransform(transform, batch.authority, is_static)) {
-      ++statistics_.transforms;
-    } else {
-      ++statistics_.rejected_transforms;
+    frames += new_frames;
+    for (const std::string* name : {&transform.child_frame, &transform.parent_frame}) {
+      added.insert(!name->empty() && name->front() == '/' ? name->substr(1) : *name);
     }
+    accepted.push_back(std::move(transform));
   }
+  // Not under the listener's lock: inserting runs the callbacks of requests it decides.
+  lock.unlock();
+  const std::size_t stored = buffer_.setTransforms(accepted, batch.authority, is_static);
+  lock.lock();
+  statistics_.transforms += stored;
+  statistics_.rejected_transforms += accepted.size() - stored;
   ++statistics_.messages;
 }
 

@@ -51,6 +51,11 @@ class BufferCore {
   /// nothing: returns false, counts it, and says why in `error` when given.
   bool setTransform(const TransformStamped& transform, const std::string& authority,
                     bool is_static = false, std::string* error = nullptr);
+  /// setTransform for a batch under one lock, deciding pending requests once at the end;
+  /// returns how many were stored (`error` gets the first refusal's reason).
+  std::size_t setTransforms(const std::vector<TransformStamped>& transforms,
+                            const std::string& authority, bool is_static = false,
+                            std::string* error = nullptr);
 
   /// target_T_source at `time` (kLatestTime: the latest time every edge on the path has data).
   /// Throws LookupException, ConnectivityException, ExtrapolationException,
