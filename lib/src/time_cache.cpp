@@ -56,9 +56,11 @@ void TimeCache::grow(std::int64_t cache_time) {
   constexpr std::size_t kLargestJump = std::size_t{1} << 16;
   std::size_t wanted = std::max<std::size_t>(16, stamps_.size() * 2);
   if (count_ >= 2 && newest_stamp_ > oldest_stamp_ && cache_time > 0) {
-    const double window_samples = static_cast<double>(count_) * static_cast<double>(cache_time) /
-                                  static_cast<double>(newest_stamp_ - oldest_stamp_);
-    const double with_margin = std::min(1.25 * window_samples + 16.0, double(kLargestJump));
+    const double window_samples = static_cast<double>(count_ - 1) *
+                                      static_cast<double>(cache_time) /
+                                      static_cast<double>(newest_stamp_ - oldest_stamp_) +
+                                  1.0;
+    const double with_margin = std::min(window_samples + 16.0, double(kLargestJump));
     while (static_cast<double>(wanted) < with_margin) wanted *= 2;
   }
   std::vector<std::int64_t> stamps(wanted);
