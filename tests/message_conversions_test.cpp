@@ -52,5 +52,25 @@ TEST(MessageConversions, MessageToIsometryMapsChildPointsIntoParent) {
       (parent_T_child * Eigen::Vector3d(1, 0, 0)).isApprox(Eigen::Vector3d(0, 1, 1), 1e-12));
 }
 
+TEST(MessageConversions, IsometryRoundTripsThroughTransformStampedAndMessage) {
+  const Eigen::Isometry3d parent_T_child =
+      Eigen::Translation3d(0.5, -1.5, 2.0) *
+      Eigen::AngleAxisd(2.2, Eigen::Vector3d(1, -1, 0.5).normalized());
+  const TransformStamped stamped =
+      toTransformStamped(parent_T_child, fromUtime(42), "base_link", "camera");
+  EXPECT_EQ(stamped.parent_frame, "base_link");
+  EXPECT_EQ(stamped.child_frame, "camera");
+  EXPECT_EQ(toUtime(stamped.stamp), 42);
+  EXPECT_TRUE(toIsometry(stamped).isApprox(parent_T_child, 1e-12));
+
+  const transform_t message = toMessage(parent_T_child, fromUtime(42), "base_link", "camera");
+  EXPECT_EQ(message.parent_frame, "base_link");
+  EXPECT_EQ(message.child_frame, "camera");
+  EXPECT_EQ(message.utime, 42);
+  EXPECT_TRUE(toIsometry(message).isApprox(parent_T_child, 1e-12));
+  const Eigen::Vector3d point(1, 2, 3);
+  EXPECT_LE((toIsometry(message) * point - parent_T_child * point).norm(), 1e-12);
+}
+
 }  // namespace
 }  // namespace lcmtf

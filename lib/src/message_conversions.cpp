@@ -43,4 +43,24 @@ TransformStamped fromMessage(const transform_t& transform) {
       Transform(fromMessage(transform.translation), fromMessage(transform.rotation))};
 }
 
+Eigen::Isometry3d toIsometry(const TransformStamped& transform) {
+  return transform.transform.toIsometry();
+}
+
+Eigen::Isometry3d toIsometry(const transform_t& transform) {
+  return toIsometry(fromMessage(transform));
+}
+
+TransformStamped toTransformStamped(const Eigen::Isometry3d& parent_T_child, TimePoint stamp,
+                                    std::string parent_frame, std::string child_frame) {
+  return TransformStamped{stamp, std::move(parent_frame), std::move(child_frame),
+                          Transform::fromIsometry(parent_T_child)};
+}
+
+transform_t toMessage(const Eigen::Isometry3d& parent_T_child, TimePoint stamp,
+                      std::string parent_frame, std::string child_frame) {
+  return toMessage(
+      toTransformStamped(parent_T_child, stamp, std::move(parent_frame), std::move(child_frame)));
+}
+
 }  // namespace lcmtf

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <string>
+
 #include <Eigen/Geometry>
 
 #include "lcmtf/quaternion_t.hpp"
@@ -17,5 +19,14 @@ transform_t toMessage(const TransformStamped& transform);
 Eigen::Vector3d fromMessage(const vector3_t& vector);
 Eigen::Quaterniond fromMessage(const quaternion_t& rotation);
 TransformStamped fromMessage(const transform_t& transform);
+
+/// parent_T_child as an Eigen isometry, from either form.
+Eigen::Isometry3d toIsometry(const TransformStamped& transform);
+Eigen::Isometry3d toIsometry(const transform_t& transform);
+/// An isometry parent_T_child with its frames and stamp, in either form.
+TransformStamped toTransformStamped(const Eigen::Isometry3d& parent_T_child, TimePoint stamp,
+                                    std::string parent_frame, std::string child_frame);
+transform_t toMessage(const Eigen::Isometry3d& parent_T_child, TimePoint stamp,
+                      std::string parent_frame, std::string child_frame);
 
 }  // namespace lcmtf
