@@ -148,7 +148,10 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
     return InsertRejection::kOlderThanHistory;
   }
   const FrameId child_id = known_child != kNoFrame ? known_child : addFrame(child);
-  const FrameId parent_id = addFrame(parent);
+  // An edge keeps its parent from one sample to the next: compare before hashing the name.
+  const FrameId usual_parent = frames_[child_id].cache.newestParent();
+  const FrameId parent_id =
+      usual_parent != kNoFrame && nameOf(usual_parent) == parent ? usual_parent : addFrame(parent);
   FrameRecord& record = frames_[child_id];
   const bool was_static = record.cache.isStatic();
   if (is_static) {

@@ -37,16 +37,15 @@ void ReadMostlyLock::unlock_shared() const {
 }
 
 void ReadMostlyLock::lock() {
-  writers_.lock();
-  writing_.store(true, std::memory_order_seq_cst);
+  // The flag is also what writers take turns on: sections under it are short.
+  while (writing_.exchange(true, std::memory_order_seq_cst)) {
+    while (writing_.load(std::memory_order_relaxed)) std::this_thread::yield();
+  }
   for (Slot& slot : slots_) {
     while (slot.readers.load(std::memory_order_seq_cst) != 0) std::this_thread::yield();
   }
 }
 
-void ReadMostlyLock::unlock() {
-  writing_.store(false, std::memory_order_release);
-  writers_.unlock();
-}
+void ReadMostlyLock::unlock() { writing_.store(false, std::memory_order_release); }
 
 }  // namespace lcmtf::detail

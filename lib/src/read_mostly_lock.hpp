@@ -3,14 +3,13 @@
 #include <array>
 #include <atomic>
 #include <cstddef>
-#include <mutex>
 
 namespace lcmtf::detail {
 
 /// A reader-writer lock for data read far more often than written. Each reader thread counts
 /// itself in a slot on a cache line of its own, so readers never write memory that other
-/// readers touch and scale with the number of cores; a writer raises a flag, waits until every
-/// slot is empty, and has the data to itself.
+/// readers touch and scale with the number of cores; a writer raises a flag (writers take turns
+/// on it), waits until every slot is empty, and has the data to itself.
 class ReadMostlyLock {
  public:
   ReadMostlyLock() = default;
@@ -31,7 +30,6 @@ class ReadMostlyLock {
 
   mutable std::array<Slot, kSlots> slots_;
   alignas(64) std::atomic<bool> writing_{false};
-  std::mutex writers_;
 };
 
 }  // namespace lcmtf::detail
