@@ -5,6 +5,7 @@
 #include "lcmtf/message_conversions.hpp"
 #include "lcmtf/transform_broadcaster.hpp"
 #include "lcmtf/wire_decode.hpp"
+#include "open_lcm.hpp"
 
 namespace lcmtf {
 
@@ -13,16 +14,12 @@ namespace {
 // Keeps each published batch well inside one UDP datagram.
 constexpr int kMaxBatchBytes = 60000;
 
-std::unique_ptr<lcm::LCM> openLcm(const std::string& url) {
-  auto lcm = std::make_unique<lcm::LCM>(url);
-  if (!lcm->good()) throw std::runtime_error("cannot open LCM at '" + url + "'");
-  return lcm;
-}
-
 }  // namespace
 
 StaticTransformBroadcaster::StaticTransformBroadcaster(StaticBroadcasterOptions options)
-    : options_(std::move(options)), owned_lcm_(openLcm(options_.lcm_url)), lcm_(*owned_lcm_) {
+    : options_(std::move(options)),
+      owned_lcm_(detail::openLcm(options_.lcm_url)),
+      lcm_(*owned_lcm_) {
   subscription_ =
       lcm_.subscribe(options_.request_channel, &StaticTransformBroadcaster::onRequest, this);
   thread_ = std::thread([this] { run(); });

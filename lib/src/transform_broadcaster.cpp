@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "lcmtf/message_conversions.hpp"
+#include "open_lcm.hpp"
 
 namespace lcmtf {
 
@@ -19,21 +20,13 @@ tf_message_t makeTfMessage(const std::vector<TransformStamped>& transforms,
   return message;
 }
 
-namespace {
-std::unique_ptr<lcm::LCM> openLcm(const std::string& url) {
-  auto lcm = std::make_unique<lcm::LCM>(url);
-  if (!lcm->good()) throw std::runtime_error("cannot open LCM at '" + url + "'");
-  return lcm;
-}
-}  // namespace
-
 TransformBroadcaster::TransformBroadcaster(lcm::LCM& lcm, std::string channel,
                                            std::string authority)
     : lcm_(lcm), channel_(std::move(channel)), authority_(std::move(authority)) {}
 
 TransformBroadcaster::TransformBroadcaster(const std::string& lcm_url, std::string channel,
                                            std::string authority)
-    : owned_lcm_(openLcm(lcm_url)),
+    : owned_lcm_(detail::openLcm(lcm_url)),
       lcm_(*owned_lcm_),
       channel_(std::move(channel)),
       authority_(std::move(authority)) {}

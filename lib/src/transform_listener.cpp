@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "lcmtf/message_conversions.hpp"
+#include "open_lcm.hpp"
 
 namespace lcmtf {
 
@@ -15,12 +16,6 @@ namespace {
 // Batches in a row, from one authority, older than the cache time behind its newest, that
 // make the listener take the jump back as a restart (a log replayed again) and start afresh.
 constexpr int kStaleBatchesBeforeReset = 3;
-
-std::unique_ptr<lcm::LCM> openLcm(const std::string& url) {
-  auto lcm = std::make_unique<lcm::LCM>(url);
-  if (!lcm->good()) throw std::runtime_error("cannot open LCM at '" + url + "'");
-  return lcm;
-}
 
 // a - b clamped to the int64 range: stamps from the network may be anything.
 std::int64_t saturatingSubtract(std::int64_t a, std::int64_t b) {
@@ -35,7 +30,7 @@ std::int64_t saturatingSubtract(std::int64_t a, std::int64_t b) {
 TransformListener::TransformListener(Buffer& buffer, ListenerOptions options)
     : buffer_(buffer),
       options_(std::move(options)),
-      owned_lcm_(openLcm(options_.lcm_url)),
+      owned_lcm_(detail::openLcm(options_.lcm_url)),
       lcm_(*owned_lcm_) {
   subscribe();
   thread_ = std::thread([this] {
