@@ -16,10 +16,11 @@ std::string BufferCore::Impl::describe(const LookupFailure& failure,
     case Kind::kNone:
       return {};
     case Kind::kInvalidName:
-      return what + ": invalid " + failure.role + " frame name '" + failure.frame +
+      return what + ": invalid " + failure.role + " frame name '" + *failure.frame +
              "': frame names must not be empty";
     case Kind::kUnknownFrame:
-      return what + ": " + failure.role + " frame '" + failure.frame + "' does not exist";
+      return what + ": " + failure.role + " frame '" +
+             std::string(stripLeadingSlash(*failure.frame)) + "' does not exist";
     case Kind::kNotConnected:
       return what + ": " + quoted(failure.source) + " and " + quoted(failure.target) +
              " are not connected " + atTime(failure.requested) + ": " + quoted(failure.source) +
@@ -27,8 +28,10 @@ std::string BufferCore::Impl::describe(const LookupFailure& failure,
              " in the tree of " + quoted(failure.edge_parent);
     case Kind::kLoop: {
       std::string loop;
-      for (FrameId frame : failure.loop) loop += quoted(frame) + " -> ";
-      if (!failure.loop.empty()) loop += quoted(failure.loop.front());
+      const std::vector<FrameId> frames =
+          findLoop(frames_, failure.loop_start, failure.requested, failure.requested == 0);
+      for (FrameId frame : frames) loop += quoted(frame) + " -> ";
+      if (!frames.empty()) loop += quoted(frames.front());
       return what + ": the frame tree has a loop " + atTime(failure.requested) + ": " + loop +
              " (each frame's parent in turn)";
     }

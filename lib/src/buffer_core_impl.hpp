@@ -44,20 +44,21 @@ struct PathEdge {
   bool isDynamic() const { return fixed == nullptr; }
 };
 
-/// Why a lookup failed, kept as data so canTransform pays for no message it does not print.
+/// Why a lookup failed, kept as plain data so a successful lookup pays nothing for it and
+/// canTransform pays for no message it does not print.
 struct LookupFailure {
   enum class Kind { kNone, kInvalidName, kUnknownFrame, kNotConnected, kLoop, kPast, kFuture };
   Kind kind = Kind::kNone;
-  std::string frame;      // the bad or unknown name
-  const char* role = "";  // "target", "source", "fixed"
+  const std::string* frame = nullptr;  // the bad or unknown name, as the caller gave it
+  const char* role = "";               // "target", "source", "fixed"
   FrameId target = kNoFrame;
   FrameId source = kNoFrame;
   FrameId edge_child = kNoFrame;  // extrapolation: the edge (child -> its parent)
   FrameId edge_parent = kNoFrame;
+  FrameId loop_start = kNoFrame;  // a frame whose ancestors loop
   std::int64_t requested = 0;
   std::int64_t oldest = 0;
   std::int64_t newest = 0;
-  std::vector<FrameId> loop;
   explicit operator bool() const { return kind != Kind::kNone; }
 };
 
@@ -141,6 +142,10 @@ class BufferCore::Impl {
   TransformableRequestHandle next_request_ = 1;
   std::atomic<bool> has_requests_{false};
 };
+
+/// The frames of the loop above `start` in the tree at `stamp` (0: as of the newest samples).
+std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId start,
+                              std::int64_t stamp, bool latest);
 
 /// One leading '/' is not part of a frame's name.
 inline std::string_view stripLeadingSlash(std::string_view name) {

@@ -19,6 +19,8 @@ struct WalkScratch {
 };
 __attribute__((tls_model("initial-exec"))) thread_local WalkScratch scratch;
 
+}  // namespace
+
 // Walks up from `start` for more steps than there are frames to find the frames of the loop.
 std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId start,
                               std::int64_t stamp, bool latest) {
@@ -34,6 +36,8 @@ std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId st
   }
   return visited;
 }
+
+namespace {
 
 // The next step up from `frame`: a whole static chain when allowed, else its own edge.
 // Sets edge.parent to kNoFrame at a root.
@@ -140,7 +144,7 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
     failure.target = target;
     failure.source = source;
     failure.requested = stamp;
-    failure.loop = findLoop(frames_, from, stamp, stamp == 0);
+    failure.loop_start = from;
     return failure;
   };
 
@@ -266,7 +270,7 @@ LookupFailure BufferCore::Impl::resolve(const std::string& name, const char* rol
   LookupFailure failure;
   failure.kind =
       stripped.empty() ? LookupFailure::Kind::kInvalidName : LookupFailure::Kind::kUnknownFrame;
-  failure.frame = stripped.empty() ? name : std::string(stripped);
+  failure.frame = &name;
   failure.role = role;
   return failure;
 }
