@@ -63,6 +63,7 @@ inline void printSummary(const RecordingReporter& reporter) {
       {"time-travel lookup", "lookup_time_travel", "lookup_time_travel", 10},
       {"canTransform", "can_transform", "can_transform", 10},
       {"lookup by FrameHandle (tf2: by name)", "lookup_by_handle", "lookup_random", 10},
+      {"  ... into a reused result", "lookup_by_handle_into", "lookup_random", 10},
   };
   auto time = [&](const std::string& name) {
     const RecordingReporter::Result* result = reporter.find(name);

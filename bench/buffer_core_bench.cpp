@@ -265,6 +265,12 @@ int main(int argc, char** argv) {
   addLookup<LcmtfSubject>(
       "lookup_by_handle", workload().random_pairs,
       [](const LcmtfSubject& s, const Query& q) { return s.lookupByHandle(q); });
+  addLookup<LcmtfSubject>("lookup_by_handle_into", workload().random_pairs,
+                          [](const LcmtfSubject& s, const Query& q) {
+                            static thread_local lcmtf::TransformStamped result;
+                            s.lookupByHandleInto(q, result);
+                            return result.transform.translation.x();
+                          });
 #ifdef LCMTF_BENCH_WITH_TF2
   printAgreement();
   registerBenchmarks<Tf2Subject>();

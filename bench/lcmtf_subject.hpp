@@ -52,6 +52,11 @@ class LcmtfSubject {
                                    lcmtf::fromUtime(q.time));
   }
 
+  void lookupByHandleInto(const Query& q, lcmtf::TransformStamped& result) const {
+    buffer_.lookupTransform(handles_[q.target], handles_[q.source], lcmtf::fromUtime(q.time),
+                            result);
+  }
+
   static Pose pose(const lcmtf::TransformStamped& t) {
     const auto& p = t.transform.translation;
     const auto& r = t.transform.rotation;

@@ -543,6 +543,7 @@ TEST(BufferCoreLookup, FrameHandleLookupsEqualStringLookups) {
   put(buffer, "world", "base", at(2), pose({6, 5, 0}, 1.2, kZ));
   put(buffer, "base", "left_arm", at(2), pose({0, 0.4, 1}, 0.3, kX));
   const std::vector<std::string> names{"world", "base", "left_arm", "left_hand", "right_hand"};
+  TransformStamped reused;  // every field overwritten by each lookup into it
   for (const std::string& target : names) {
     for (const std::string& source : names) {
       const FrameHandle target_handle = buffer.findFrame(target);
@@ -559,6 +560,11 @@ TEST(BufferCoreLookup, FrameHandleLookupsEqualStringLookups) {
         EXPECT_EQ(by_handle.stamp, by_name.stamp);
         EXPECT_EQ(by_handle.parent_frame, target);
         EXPECT_EQ(by_handle.child_frame, source);
+        buffer.lookupTransform(target_handle, source_handle, t, reused);
+        EXPECT_TRUE(identical(reused.transform, by_name.transform)) << source << " in " << target;
+        EXPECT_EQ(reused.stamp, by_name.stamp);
+        EXPECT_EQ(reused.parent_frame, target);
+        EXPECT_EQ(reused.child_frame, source);
         EXPECT_TRUE(buffer.canTransform(target_handle, source_handle, t));
       }
       std::string why_by_name;

@@ -317,6 +317,12 @@ TransformStamped BufferCore::lookupTransform(const std::string& target, const st
 TransformStamped BufferCore::lookupTransform(FrameHandle target, FrameHandle source,
                                              TimePoint time) const {
   TransformStamped result;
+  lookupTransform(target, source, time, result);
+  return result;
+}
+
+void BufferCore::lookupTransform(FrameHandle target, FrameHandle source, TimePoint time,
+                                 TransformStamped& result) const {
   SharedLock lock(impl_->lock_);
   const auto frame_count = impl_->frames_.size();
   if (!target || !source || target.id >= frame_count || source.id >= frame_count) {
@@ -328,7 +334,6 @@ TransformStamped BufferCore::lookupTransform(FrameHandle target, FrameHandle sou
     impl_->raise(failure, lookupWhat(std::string(impl_->nameOf(target.id)),
                                      std::string(impl_->nameOf(source.id))));
   }
-  return result;
 }
 
 TransformStamped BufferCore::lookupTransform(const std::string& target, TimePoint target_time,

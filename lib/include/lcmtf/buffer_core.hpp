@@ -63,6 +63,9 @@ class BufferCore {
   TransformStamped lookupTransform(const std::string& target, const std::string& source,
                                    TimePoint time) const;
   TransformStamped lookupTransform(FrameHandle target, FrameHandle source, TimePoint time) const;
+  /// The same into `result`, whose strings keep their storage: no allocation once warm.
+  void lookupTransform(FrameHandle target, FrameHandle source, TimePoint time,
+                       TransformStamped& result) const;
   /// Time travel: source at source_time into `fixed`, then `fixed` at target_time into target.
   TransformStamped lookupTransform(const std::string& target, TimePoint target_time,
                                    const std::string& source, TimePoint source_time,
