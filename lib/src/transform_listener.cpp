@@ -1,7 +1,6 @@
 #include "lcmtf/transform_listener.hpp"
 
 #include <algorithm>
-#include <iostream>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -77,7 +76,9 @@ void TransformListener::report(const std::string& kind, const std::string& messa
   bool& reported = reported_[kind];
   if (reported) return;
   reported = true;
-  std::cerr << "lcmtf listener: " << message << " (reported once; later ones are only counted)\n";
+  if (options_.reporter) {
+    options_.reporter(message + " (reported once; later ones are only counted)");
+  }
 }
 
 void TransformListener::onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {

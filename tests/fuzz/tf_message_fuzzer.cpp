@@ -47,6 +47,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   buffer.setErrorReporter(nullptr);
   lcmtf::ListenerOptions options;
   options.max_frames = 64;
+  options.reporter = nullptr;
   lcmtf::TransformListener listener(buffer, lcm, options);
   for (std::size_t i = 0; i < messages; ++i) {
     const std::uint8_t* message = data + 1 + i * chunk;

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -28,6 +30,10 @@ struct ListenerOptions {
   DecodeLimits limits;                           ///< bounds on incoming messages
   int queue_capacity = 1000;                     ///< messages LCM queues per channel
   std::string authority = defaultAuthority();    ///< names this listener in its requests
+  /// Where the first refusal of each kind is reported; null: nowhere. Default: stderr.
+  std::function<void(const std::string& message)> reporter = [](const std::string& message) {
+    std::cerr << "lcmtf listener: " << message << '\n';
+  };
 };
 
 /// What a listener has received and refused since it started.
