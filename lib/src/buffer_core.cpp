@@ -296,7 +296,6 @@ bool sameFrame(const std::string& target, const std::string& source) {
 
 TransformStamped BufferCore::lookupTransform(const std::string& target, const std::string& source,
                                              TimePoint time) const {
-  TransformStamped result;
   SharedLock lock(impl_->lock_);
   if (sameFrame(target, source)) {
     const FrameId id = impl_->idOf(stripLeadingSlash(target));
@@ -307,48 +306,75 @@ TransformStamped BufferCore::lookupTransform(const std::string& target, const st
   }
   FrameId target_id = kNoFrame;
   FrameId source_id = kNoFrame;
+  std::int64_t stamp = toUtime(time);
+  Transform value;
   LookupFailure failure = impl_->resolve(target, "target", target_id);
   if (!failure) failure = impl_->resolve(source, "source", source_id);
-  if (!failure) failure = impl_->lookup(target_id, source_id, toUtime(time), &result);
+  if (!failure) failure = impl_->lookup(target_id, source_id, stamp, &value);
   if (failure) impl_->raise(failure, lookupWhat(target, source));
-  return result;
+  return impl_->stamped(target_id, source_id, stamp, value);
+}
+
+namespace {
+
+bool isForeign(FrameHandle handle, std::size_t frame_count) {
+  return !handle || handle.id >= frame_count;
+}
+
+}  // namespace
+
+void BufferCore::Impl::lookupHandles(FrameHandle target, FrameHandle source, std::int64_t& stamp,
+                                     Transform& value) const {
+  if (isForeign(target, frames_.size()) || isForeign(source, frames_.size())) {
+    throw InvalidArgumentException(
+        "lookupTransform: a frame handle is null or not from this buffer");
+  }
+  const LookupFailure failure = lookup(target.id, source.id, stamp, &value);
+  if (failure) {
+    raise(failure,
+          lookupWhat(std::string(nameOf(target.id)), std::string(nameOf(source.id))));
+  }
 }
 
 TransformStamped BufferCore::lookupTransform(FrameHandle target, FrameHandle source,
                                              TimePoint time) const {
-  TransformStamped result;
-  lookupTransform(target, source, time, result);
-  return result;
+  SharedLock lock(impl_->lock_);
+  std::int64_t stamp = toUtime(time);
+  Transform value;
+  impl_->lookupHandles(target, source, stamp, value);
+  return impl_->stamped(target.id, source.id, stamp, value);
 }
 
 void BufferCore::lookupTransform(FrameHandle target, FrameHandle source, TimePoint time,
                                  TransformStamped& result) const {
   SharedLock lock(impl_->lock_);
-  const auto frame_count = impl_->frames_.size();
-  if (!target || !source || target.id >= frame_count || source.id >= frame_count) {
-    throw InvalidArgumentException(
-        "lookupTransform: a frame handle is null or not from this buffer");
-  }
-  const LookupFailure failure = impl_->lookup(target.id, source.id, toUtime(time), &result);
-  if (failure) {
-    impl_->raise(failure, lookupWhat(std::string(impl_->nameOf(target.id)),
-                                     std::string(impl_->nameOf(source.id))));
-  }
+  std::int64_t stamp = toUtime(time);
+  impl_->lookupHandles(target, source, stamp, result.transform);
+  result.stamp = fromUtime(stamp);
+  result.parent_frame.assign(impl_->nameOf(target.id));
+  result.child_frame.assign(impl_->nameOf(source.id));
 }
 
 TransformStamped BufferCore::lookupTransform(const std::string& target, TimePoint target_time,
                                              const std::string& source, TimePoint source_time,
                                              const std::string& fixed) const {
-  {
-    SharedLock lock(impl_->lock_);
-    const LookupFailure failure = impl_->resolveAll(target, source, fixed);
-    if (failure) impl_->raise(failure, timeTravelWhat(target, source, fixed));
-  }
-  const TransformStamped fixed_T_source = lookupTransform(fixed, source, source_time);
-  const TransformStamped target_T_fixed = lookupTransform(target, fixed, target_time);
-  return TransformStamped{target_T_fixed.stamp, target_T_fixed.parent_frame,
-                          fixed_T_source.child_frame,
-                          target_T_fixed.transform * fixed_T_source.transform};
+  SharedLock lock(impl_->lock_);
+  FrameId target_id = kNoFrame;
+  FrameId source_id = kNoFrame;
+  FrameId fixed_id = kNoFrame;
+  LookupFailure failure = impl_->resolve(target, "target", target_id);
+  if (!failure) failure = impl_->resolve(source, "source", source_id);
+  if (!failure) failure = impl_->resolve(fixed, "fixed", fixed_id);
+  if (failure) impl_->raise(failure, timeTravelWhat(target, source, fixed));
+  std::int64_t source_stamp = toUtime(source_time);
+  std::int64_t target_stamp = toUtime(target_time);
+  Transform fixed_T_source;
+  Transform target_T_fixed;
+  failure = impl_->lookup(fixed_id, source_id, source_stamp, &fixed_T_source);
+  if (failure) impl_->raise(failure, lookupWhat(fixed, source));
+  failure = impl_->lookup(target_id, fixed_id, target_stamp, &target_T_fixed);
+  if (failure) impl_->raise(failure, lookupWhat(target, fixed));
+  return impl_->stamped(target_id, source_id, target_stamp, target_T_fixed * fixed_T_source);
 }
 
 bool BufferCore::canTransform(const std::string& target, const std::string& source, TimePoint time,
@@ -359,7 +385,8 @@ bool BufferCore::canTransform(const std::string& target, const std::string& sour
   FrameId source_id = kNoFrame;
   LookupFailure failure = impl_->resolve(target, "target", target_id);
   if (!failure) failure = impl_->resolve(source, "source", source_id);
-  if (!failure) failure = impl_->lookup(target_id, source_id, toUtime(time), nullptr);
+  std::int64_t stamp = toUtime(time);
+  if (!failure) failure = impl_->lookup(target_id, source_id, stamp, nullptr);
   if (failure && why) *why = impl_->describe(failure, lookupWhat(target, source));
   return !failure;
 }
@@ -368,11 +395,12 @@ bool BufferCore::canTransform(FrameHandle target, FrameHandle source, TimePoint 
                               std::string* why) const {
   SharedLock lock(impl_->lock_);
   const auto frame_count = impl_->frames_.size();
-  if (!target || !source || target.id >= frame_count || source.id >= frame_count) {
+  if (isForeign(target, frame_count) || isForeign(source, frame_count)) {
     if (why) *why = "canTransform: a frame handle is null or not from this buffer";
     return false;
   }
-  const LookupFailure failure = impl_->lookup(target.id, source.id, toUtime(time), nullptr);
+  std::int64_t stamp = toUtime(time);
+  const LookupFailure failure = impl_->lookup(target.id, source.id, stamp, nullptr);
   if (failure && why) {
     *why = impl_->describe(failure, lookupWhat(std::string(impl_->nameOf(target.id)),
                                                std::string(impl_->nameOf(source.id))));

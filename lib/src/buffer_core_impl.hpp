@@ -41,6 +41,7 @@ struct PathEdge {
   const Transform* fixed = nullptr;  // the value of a static step
   detail::SampleSpan span;           // the samples of a dynamic edge
   std::size_t hint = detail::TimeCache::kNoHint;
+  const Transform* value = nullptr;  // the step's value, once known
   bool isDynamic() const { return fixed == nullptr; }
 };
 
@@ -82,9 +83,19 @@ class BufferCore::Impl {
   const std::string_view& nameOf(FrameId id) const { return frames_[id].name; }
   std::string quoted(FrameId id) const { return "'" + std::string(nameOf(id)) + "'"; }
 
-  /// target_T_source at `stamp` (0: latest common time) into `out`, or why not.
-  LookupFailure lookup(FrameId target, FrameId source, std::int64_t stamp,
-                       TransformStamped* out) const;
+  /// target_T_source at `stamp` (0: the latest common time, written back) into `value` when
+  /// given, or why not.
+  LookupFailure lookup(FrameId target, FrameId source, std::int64_t& stamp,
+                       Transform* value) const;
+  /// lookup() between two handles; throws when either is foreign or the lookup fails.
+  void lookupHandles(FrameHandle target, FrameHandle source, std::int64_t& stamp,
+                     Transform& value) const;
+  /// The stamped result of a lookup that succeeded.
+  TransformStamped stamped(FrameId target, FrameId source, std::int64_t stamp,
+                           const Transform& value) const {
+    return TransformStamped{fromUtime(stamp), std::string(nameOf(target)),
+                            std::string(nameOf(source)), value};
+  }
   LookupFailure latestCommonTime(FrameId target, FrameId source, std::int64_t& stamp) const;
   /// The steps from each frame up to their common ancestor at `stamp` (0: the tree as of each
   /// edge's newest sample); with `whole_chains`, chains of static edges step edge by edge.

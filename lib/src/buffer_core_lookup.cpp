@@ -1,6 +1,7 @@
 // Walking the frame tree: from both frames up to their common ancestor, then composing.
 #include <algorithm>
 
+#include "batch_interpolation.hpp"
 #include "buffer_core_impl.hpp"
 
 namespace lcmtf {
@@ -16,6 +17,8 @@ struct WalkScratch {
   std::uint64_t epoch = 0;
   std::vector<PathEdge> source_edges;
   std::vector<PathEdge> target_edges;
+  std::vector<Transform> interpolated;
+  std::vector<detail::InterpolationTask> tasks;
 };
 __attribute__((tls_model("initial-exec"))) thread_local WalkScratch scratch;
 
@@ -65,13 +68,37 @@ void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t 
   }
 }
 
+// Sets each step's value; the dynamic edges between two samples are interpolated together.
+void settleValues(WalkScratch& s) {
+  std::size_t between = 0;
+  for (const auto* edges : {&s.source_edges, &s.target_edges}) {
+    for (const PathEdge& edge : *edges) between += edge.isDynamic() && edge.span.newer ? 1 : 0;
+  }
+  if (s.interpolated.size() < between) s.interpolated.resize(between);
+  s.tasks.clear();
+  for (auto* edges : {&s.source_edges, &s.target_edges}) {
+    for (PathEdge& edge : *edges) {
+      if (!edge.isDynamic()) {
+        edge.value = edge.fixed;
+      } else if (!edge.span.newer) {
+        edge.value = &edge.span.older->transform;
+      } else {
+        Transform* out = &s.interpolated[s.tasks.size()];
+        s.tasks.push_back({&edge.span.older->transform, &edge.span.newer->transform,
+                           edge.span.ratio, out});
+        edge.value = out;
+      }
+    }
+  }
+  detail::interpolateBatch(s.tasks.data(), s.tasks.size());
+}
+
 // The product of the steps' values, top step first: ancestor_T_frame.
 Transform composeUp(const std::vector<PathEdge>& edges) {
   if (edges.empty()) return Transform::identity();
-  auto value = [](const PathEdge& edge) { return edge.fixed ? *edge.fixed : edge.span.value(); };
-  Transform ancestor_T_frame = value(edges.front());
+  Transform ancestor_T_frame = *edges.front().value;
   for (auto edge = edges.begin() + 1; edge != edges.end(); ++edge) {
-    const Transform step = value(*edge);
+    const Transform& step = *edge->value;
     ancestor_T_frame.translation = step.rotation * ancestor_T_frame.translation + step.translation;
     ancestor_T_frame.rotation = step.rotation * ancestor_T_frame.rotation;
   }
@@ -212,8 +239,8 @@ LookupFailure BufferCore::Impl::latestCommonTime(FrameId target, FrameId source,
   return failure;
 }
 
-LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int64_t stamp,
-                                       TransformStamped* out) const {
+LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int64_t& stamp,
+                                       Transform* value) const {
   WalkScratch& s = scratch;
   LookupFailure failure;
   if (target == source) {
@@ -244,17 +271,15 @@ LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int6
     failure.source = source;
     return failure;
   }
-  if (out) {
-    out->stamp = fromUtime(stamp);
-    out->parent_frame.assign(nameOf(target));
-    out->child_frame.assign(nameOf(source));
+  if (value) {
     if (target == source) {
-      out->transform = Transform::identity();
+      *value = Transform::identity();
     } else {
+      settleValues(s);
       const Transform ancestor_T_source = composeUp(s.source_edges);
-      out->transform = s.target_edges.empty()
-                           ? ancestor_T_source
-                           : composeUp(s.target_edges).inverse() * ancestor_T_source;
+      *value = s.target_edges.empty()
+                   ? ancestor_T_source
+                   : composeUp(s.target_edges).inverse() * ancestor_T_source;
     }
   }
   return {};

@@ -39,7 +39,7 @@ std::vector<std::function<void()>> BufferCore::Impl::collectDecidedRequests() {
     if (r.source_id == kNoFrame) r.source_id = idOf(stripLeadingSlash(r.source));
     std::optional<TransformableResult> result;
     if (r.target_id != kNoFrame && r.source_id != kNoFrame) {
-      const std::int64_t wanted = toUtime(r.time);
+      std::int64_t wanted = toUtime(r.time);
       std::int64_t latest = 0;
       if (r.target_id == r.source_id || !lookup(r.target_id, r.source_id, wanted, nullptr)) {
         result = TransformableResult::kAvailable;

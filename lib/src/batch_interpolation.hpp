@@ -1,0 +1,21 @@
+#pragma once
+
+#include <cstddef>
+
+#include "lcmtf/transform.hpp"
+
+namespace lcmtf::detail {
+
+/// One interpolation of a batch: interpolate(*older, *newer, ratio) goes to *out.
+struct InterpolationTask {
+  const Transform* older = nullptr;
+  const Transform* newer = nullptr;
+  double ratio = 0.0;
+  Transform* out = nullptr;
+};
+
+/// Runs every task, with the same result as interpolate() for each, but stage by stage across
+/// the batch so that the long chains of dependent arithmetic in each slerp overlap.
+void interpolateBatch(const InterpolationTask* tasks, std::size_t count);
+
+}  // namespace lcmtf::detail

@@ -1,0 +1,82 @@
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+
+namespace lcmtf::detail {
+
+// Slerp of unit quaternions a and b (b already on a's side of the sphere) is
+// weight_a * a + weight_b * b with weight = sin(w * arc) / sin(arc), w = 1 - ratio and ratio.
+// The weights come from y = |a - b|^2 / 4 = sin^2(arc / 2); series serve small arcs with no
+// libm calls, since samples close in time are close in rotation.
+
+// Taylor coefficients of asin(s)^2 in powers of y = s^2, and of sin(u)/u in powers of u^2.
+constexpr double kAsinSquared[] = {1.0,
+                                   0.3333333333333333,
+                                   0.17777777777777778,
+                                   0.11428571428571428,
+                                   0.08126984126984127,
+                                   0.06156806156806157,
+                                   0.04871319157033443,
+                                   0.03978243978243978,
+                                   0.03328204112517838,
+                                   0.028377319275152094,
+                                   0.02456910759753428,
+                                   0.02154247840073658,
+                                   0.019089950090498877};
+constexpr double kSinc[] = {1.0,
+                            -0.16666666666666666,
+                            0.008333333333333333,
+                            -0.0001984126984126984,
+                            2.7557319223985893e-06,
+                            -2.505210838544172e-08,
+                            1.6059043836821613e-10,
+                            -7.647163731819816e-13,
+                            2.8114572543455206e-15};
+
+// How many leading terms of each series are exact to double precision, for y up to a limit:
+// 5 and 5 up to an arc of 0.063 rad (y = 1e-3), 13 and 9 up to 0.5 rad (y = 0.0612).
+constexpr double kShortSeriesLimit = 1e-3;
+constexpr double kLongSeriesLimit = 0.0612;
+
+template <std::size_t Terms, std::size_t N, std::size_t I = 0>
+inline double horner(const double (&coefficients)[N], double x) {
+  static_assert(Terms <= N);
+  if constexpr (I + 1 == Terms) {
+    return coefficients[I];
+  } else {
+    return coefficients[I] + x * horner<Terms, N, I + 1>(coefficients, x);
+  }
+}
+
+/// The squared arc, from y, by the short series (y <= kShortSeriesLimit).
+inline double shortArcSquared(double y) { return 4.0 * y * horner<5>(kAsinSquared, y); }
+
+/// One weight, w * sin(w * arc) / (w * arc), by the short series; `inverse_sinc` is
+/// arc / sin(arc).
+inline double shortSeriesWeight(double w, double arc_squared, double inverse_sinc) {
+  return w * (horner<5>(kSinc, w * w * arc_squared) * inverse_sinc);
+}
+
+/// Turns weight_a = 1 - ratio and weight_b = ratio into the slerp weights, for any y.
+inline void slerpWeights(double y, double& weight_a, double& weight_b) {
+  if (y <= kShortSeriesLimit) {
+    const double arc_squared = shortArcSquared(y);
+    const double inverse_sinc = 1.0 / horner<5>(kSinc, arc_squared);
+    weight_a = shortSeriesWeight(weight_a, arc_squared, inverse_sinc);
+    weight_b = shortSeriesWeight(weight_b, arc_squared, inverse_sinc);
+  } else if (y <= kLongSeriesLimit) {
+    const double arc_squared = 4.0 * y * horner<13>(kAsinSquared, y);
+    const double inverse_sinc = 1.0 / horner<9>(kSinc, arc_squared);
+    weight_a *= horner<9>(kSinc, weight_a * weight_a * arc_squared) * inverse_sinc;
+    weight_b *= horner<9>(kSinc, weight_b * weight_b * arc_squared) * inverse_sinc;
+  } else {
+    // 2 asin(sqrt(y)), written so that it stays accurate up to half a turn.
+    const double arc = 2.0 * std::atan2(std::sqrt(y), std::sqrt(1.0 - y));
+    const double inverse_sine = 1.0 / std::sin(arc);
+    weight_a = std::sin(weight_a * arc) * inverse_sine;
+    weight_b = std::sin(weight_b * arc) * inverse_sine;
+  }
+}
+
+}  // namespace lcmtf::detail
