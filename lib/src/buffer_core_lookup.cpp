@@ -65,6 +65,8 @@ void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t 
     edge.parent = cache.newestParent();
   } else {
     edge.parent = cache.parentAt(stamp, edge.status);
+    // Loading the samples now gives the loads the rest of the walk to complete.
+    edge.hint = cache.prefetch(stamp);
   }
 }
 
@@ -81,11 +83,10 @@ void settleValues(WalkScratch& s) {
       if (!edge.isDynamic()) {
         edge.value = edge.fixed;
       } else if (!edge.span.newer) {
-        edge.value = &edge.span.older->transform;
+        edge.value = edge.span.older;
       } else {
         Transform* out = &s.interpolated[s.tasks.size()];
-        s.tasks.push_back({&edge.span.older->transform, &edge.span.newer->transform,
-                           edge.span.ratio, out});
+        s.tasks.push_back({edge.span.older, edge.span.newer, edge.span.ratio, out});
         edge.value = out;
       }
     }
@@ -110,14 +111,11 @@ Transform composeUp(const std::vector<PathEdge>& edges) {
 LookupFailure sampleEdges(const std::vector<FrameRecord>& frames, std::vector<PathEdge>& edges,
                           std::int64_t stamp, bool* parent_changed) {
   for (PathEdge& edge : edges) {
-    if (edge.isDynamic()) edge.hint = frames[edge.child].cache.prefetch(stamp);
-  }
-  for (PathEdge& edge : edges) {
     if (!edge.isDynamic()) continue;
     const detail::TimeCache& cache = frames[edge.child].cache;
     if (edge.status == SampleStatus::kOk) edge.status = cache.find(stamp, edge.span, edge.hint);
     if (edge.status == SampleStatus::kOk) {
-      if (parent_changed && edge.span.parent() != edge.parent) *parent_changed = true;
+      if (parent_changed && edge.span.parent != edge.parent) *parent_changed = true;
       continue;
     }
     LookupFailure failure;
@@ -188,13 +186,14 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
       *ancestor = target;
       return {};
     }
-    PathEdge edge;
+    // Filled in place: a copy of a freshly written edge would stall on store forwarding.
+    PathEdge& edge = source_edges.emplace_back();
     stepUp(frames_, frame, stamp, whole_chains, edge);
     if (edge.parent == kNoFrame) {
+      source_edges.pop_back();
       source_root = frame;
       break;
     }
-    source_edges.push_back(edge);
     frame = edge.parent;
   }
 
@@ -206,9 +205,10 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
       *ancestor = frame;
       return {};
     }
-    PathEdge edge;
+    PathEdge& edge = target_edges.emplace_back();
     stepUp(frames_, frame, stamp, whole_chains, edge);
     if (edge.parent == kNoFrame) {
+      target_edges.pop_back();
       LookupFailure failure;
       failure.kind = LookupFailure::Kind::kNotConnected;
       failure.target = target;
@@ -218,7 +218,6 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
       failure.edge_parent = frame;
       return failure;
     }
-    target_edges.push_back(edge);
     frame = edge.parent;
   }
 }

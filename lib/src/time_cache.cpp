@@ -5,8 +5,10 @@
 namespace lcmtf::detail {
 
 void TimeCache::setStatic(FrameId parent, const Transform& transform) {
-  stamps_.assign(1, 0);
-  values_.assign(1, EdgeValue{parent, transform});
+  stamps_.clear();
+  parents_.clear();
+  transforms_.clear();
+  static_value_ = EdgeValue{parent, transform};
   mask_ = 0;
   head_ = 0;
   count_ = 1;
@@ -29,22 +31,38 @@ void TimeCache::refreshEnds() {
     oldest_parent_ = newest_parent_ = kNoFrame;
     return;
   }
+  if (is_static_) {
+    oldest_stamp_ = newest_stamp_ = 0;
+    oldest_parent_ = newest_parent_ = static_value_.parent;
+    samples_per_utime_ = 0.0;
+    return;
+  }
   oldest_stamp_ = stampAt(0);
-  oldest_parent_ = valueAt(0).parent;
+  oldest_parent_ = parentOf(0);
   newest_stamp_ = stampAt(count_ - 1);
-  newest_parent_ = valueAt(count_ - 1).parent;
+  newest_parent_ = parentOf(count_ - 1);
+  samples_per_utime_ = newest_stamp_ > oldest_stamp_
+                           ? static_cast<double>(count_ - 1) /
+                                 static_cast<double>(newest_stamp_ - oldest_stamp_)
+                           : 0.0;
 }
 
-void TimeCache::put(std::size_t index, std::int64_t stamp, const EdgeValue& value) {
+void TimeCache::put(std::size_t index, std::int64_t stamp, FrameId parent,
+                    const Transform& transform) {
   stamps_[slot(index)] = stamp;
-  values_[slot(index)] = value;
+  parents_[slot(index)] = parent;
+  transforms_[slot(index)] = transform;
+}
+
+void TimeCache::move(std::size_t from, std::size_t to) {
+  put(to, stampAt(from), parentOf(from), transformAt(from));
 }
 
 void TimeCache::noteParentChanges(std::size_t index) {
-  if (index > 0 && valueAt(index - 1).parent != valueAt(index).parent) {
+  if (index > 0 && parentOf(index - 1) != parentOf(index)) {
     parent_changed_at_ = std::max(parent_changed_at_, stampAt(index));
   }
-  if (index + 1 < count_ && valueAt(index + 1).parent != valueAt(index).parent) {
+  if (index + 1 < count_ && parentOf(index + 1) != parentOf(index)) {
     parent_changed_at_ = std::max(parent_changed_at_, stampAt(index + 1));
   }
 }
@@ -64,31 +82,31 @@ void TimeCache::grow(std::int64_t cache_time) {
     while (static_cast<double>(wanted) < with_margin) wanted *= 2;
   }
   std::vector<std::int64_t> stamps(wanted);
-  std::vector<EdgeValue> values(wanted);
+  std::vector<FrameId> parents(wanted);
+  std::vector<Transform, CacheLineAllocator<Transform>> transforms(wanted);
   for (std::size_t i = 0; i < count_; ++i) {
     stamps[i] = stampAt(i);
-    values[i] = valueAt(i);
+    parents[i] = parentOf(i);
+    transforms[i] = transformAt(i);
   }
   stamps_.swap(stamps);
-  values_.swap(values);
+  parents_.swap(parents);
+  transforms_.swap(transforms);
   mask_ = wanted - 1;
   head_ = 0;
 }
 
 InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_time) {
   if (is_static_) {
-    stamps_.clear();
-    values_.clear();
     mask_ = 0;
     count_ = 0;
     is_static_ = false;
   }
   if (isTooOld(sample.stamp, cache_time)) return InsertOutcome::kTooOld;
-  const EdgeValue value{sample.parent, sample.transform};
   if (count_ > 0 && sample.stamp <= newest_stamp_) {
     const std::size_t index = indexAtOrBefore(sample.stamp);
     if (index < count_ && stampAt(index) == sample.stamp) {
-      put(index, sample.stamp, value);
+      put(index, sample.stamp, sample.parent, sample.transform);
       noteParentChanges(index);
       refreshEnds();
       return InsertOutcome::kReplaced;
@@ -96,15 +114,15 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     if (count_ == stamps_.size()) grow(cache_time);
     // Shift the samples newer than `sample` one place towards the back.
     const std::size_t insert_at = index < count_ ? index + 1 : 0;
-    for (std::size_t i = count_; i > insert_at; --i) put(i, stampAt(i - 1), valueAt(i - 1));
-    put(insert_at, sample.stamp, value);
+    for (std::size_t i = count_; i > insert_at; --i) move(i - 1, i);
+    put(insert_at, sample.stamp, sample.parent, sample.transform);
     ++count_;
     noteParentChanges(insert_at);
     refreshEnds();
     return InsertOutcome::kAdded;
   }
   if (count_ == stamps_.size()) grow(cache_time);
-  put(count_, sample.stamp, value);
+  put(count_, sample.stamp, sample.parent, sample.transform);
   ++count_;
   noteParentChanges(count_ - 1);
   const std::int64_t horizon = saturatingSubtract(sample.stamp, cache_time);
@@ -120,9 +138,8 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
 // for oldest <= stamp < newest.
 std::size_t TimeCache::guessIndex(std::int64_t stamp) const {
   const std::size_t last = count_ - 1;
-  const auto guess = static_cast<std::size_t>(static_cast<double>(stamp - oldest_stamp_) /
-                                              static_cast<double>(newest_stamp_ - oldest_stamp_) *
-                                              static_cast<double>(last));
+  const auto guess = static_cast<std::size_t>(static_cast<double>(stamp - oldest_stamp_) *
+                                              samples_per_utime_);
   return std::min(guess, last - 1);
 }
 
@@ -132,12 +149,8 @@ std::size_t TimeCache::prefetch(std::int64_t stamp) const {
   }
   const std::size_t guess = guessIndex(stamp);
   __builtin_prefetch(&stamps_[slot(guess)]);
-  __builtin_prefetch(&stamps_[slot(guess + 1)]);
-  for (const std::size_t index : {guess, guess + 1}) {
-    const char* value = reinterpret_cast<const char*>(&values_[slot(index)]);
-    __builtin_prefetch(value);
-    __builtin_prefetch(value + sizeof(EdgeValue) - 1);
-  }
+  __builtin_prefetch(&transforms_[slot(guess)]);
+  __builtin_prefetch(&transforms_[slot(guess + 1)]);
   return guess;
 }
 
@@ -174,7 +187,7 @@ std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp, std::size_t hint) con
 FrameId TimeCache::parentAt(std::int64_t stamp, SampleStatus& status) const {
   if (is_static_) {
     status = SampleStatus::kOk;
-    return values_[0].parent;
+    return static_value_.parent;
   }
   if (count_ == 0) {
     status = SampleStatus::kEmpty;
@@ -190,12 +203,12 @@ FrameId TimeCache::parentAt(std::int64_t stamp, SampleStatus& status) const {
   }
   status = SampleStatus::kOk;
   if (hasSingleParent()) return newest_parent_;
-  return valueAt(indexAtOrBefore(stamp)).parent;
+  return parentOf(indexAtOrBefore(stamp));
 }
 
 SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span, std::size_t hint) const {
   if (is_static_) {
-    span = SampleSpan{&values_[0], nullptr, 0.0};
+    span = SampleSpan{&static_value_.transform, nullptr, 0.0, static_value_.parent};
     return SampleStatus::kOk;
   }
   if (count_ == 0) return SampleStatus::kEmpty;
@@ -203,19 +216,15 @@ SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span, std::size_t h
   if (stamp > newest_stamp_) return SampleStatus::kFuture;
   const std::size_t index = indexAtOrBefore(stamp, hint);
   const std::int64_t older_stamp = stampAt(index);
-  const EdgeValue& older = valueAt(index);
-  if (older_stamp == stamp) {
-    span = SampleSpan{&older, nullptr, 0.0};
+  const FrameId parent = hasSingleParent() ? newest_parent_ : parentOf(index);
+  if (older_stamp == stamp || (!hasSingleParent() && parentOf(index + 1) != parent)) {
+    span = SampleSpan{&transformAt(index), nullptr, 0.0, parent};
     return SampleStatus::kOk;
   }
-  const EdgeValue& newer = valueAt(index + 1);
-  if (newer.parent != older.parent) {
-    span = SampleSpan{&older, nullptr, 0.0};
-    return SampleStatus::kOk;
-  }
-  span = SampleSpan{&older, &newer,
+  span = SampleSpan{&transformAt(index), &transformAt(index + 1),
                     static_cast<double>(stamp - older_stamp) /
-                        static_cast<double>(stampAt(index + 1) - older_stamp)};
+                        static_cast<double>(stampAt(index + 1) - older_stamp),
+                    parent};
   return SampleStatus::kOk;
 }
 

@@ -4,6 +4,7 @@
 #include <limits>
 #include <vector>
 
+#include "cache_line_allocator.hpp"
 #include "lcmtf/transform.hpp"
 
 namespace lcmtf::detail {
@@ -30,13 +31,11 @@ enum class SampleStatus { kOk, kEmpty, kPast, kFuture };
 /// The edge's value at a time, as the samples it comes from: `older` alone when exact (or when
 /// the parent changes between the two), else `older` and `newer` mixed by `ratio`.
 struct SampleSpan {
-  const EdgeValue* older = nullptr;
-  const EdgeValue* newer = nullptr;
+  const Transform* older = nullptr;
+  const Transform* newer = nullptr;
   double ratio = 0.0;
-  FrameId parent() const { return older->parent; }
-  Transform value() const {
-    return newer ? interpolate(older->transform, newer->transform, ratio) : older->transform;
-  }
+  FrameId parent = kNoFrame;
+  Transform value() const { return newer ? interpolate(*older, *newer, ratio) : *older; }
 };
 
 enum class InsertOutcome { kAdded, kReplaced, kTooOld };
@@ -50,8 +49,8 @@ inline std::int64_t saturatingSubtract(std::int64_t a, std::int64_t b) {
 }
 
 /// The history of one edge (child frame -> parent) kept in time order in a ring, or a single
-/// static value valid at every time. Stamps and values live in two parallel rings, so that
-/// searching by time reads 8 bytes a sample and only the two samples used are loaded whole.
+/// static value valid at every time. Stamps, parents and transforms live in parallel rings, so
+/// that searching by time reads 8 bytes a sample, and each transform fills one cache line.
 class TimeCache {
  public:
   bool isStatic() const { return is_static_; }
@@ -71,7 +70,7 @@ class TimeCache {
   void clearHistory();
 
   /// The value of a static edge.
-  const EdgeValue& staticValue() const { return values_[0]; }
+  const EdgeValue& staticValue() const { return static_value_; }
   std::int64_t oldestStamp() const { return oldest_stamp_; }
   std::int64_t newestStamp() const { return newest_stamp_; }
   FrameId newestParent() const { return newest_parent_; }
@@ -90,8 +89,10 @@ class TimeCache {
  private:
   std::size_t slot(std::size_t index) const { return (head_ + index) & mask_; }
   std::int64_t stampAt(std::size_t index) const { return stamps_[slot(index)]; }
-  const EdgeValue& valueAt(std::size_t index) const { return values_[slot(index)]; }
-  void put(std::size_t index, std::int64_t stamp, const EdgeValue& value);
+  FrameId parentOf(std::size_t index) const { return parents_[slot(index)]; }
+  const Transform& transformAt(std::size_t index) const { return transforms_[slot(index)]; }
+  void put(std::size_t index, std::int64_t stamp, FrameId parent, const Transform& transform);
+  void move(std::size_t from, std::size_t to);
   std::size_t indexAtOrBefore(std::int64_t stamp, std::size_t hint = kNoHint) const;
   std::size_t guessIndex(std::int64_t stamp) const;
   void grow(std::int64_t cache_time);
@@ -100,7 +101,9 @@ class TimeCache {
   bool hasSingleParent() const { return parent_changed_at_ <= oldest_stamp_; }
 
   std::vector<std::int64_t> stamps_;
-  std::vector<EdgeValue> values_;
+  std::vector<FrameId> parents_;
+  std::vector<Transform, CacheLineAllocator<Transform>> transforms_;
+  EdgeValue static_value_;
   std::size_t mask_ = 0;
   std::size_t head_ = 0;
   std::size_t count_ = 0;
@@ -113,6 +116,7 @@ class TimeCache {
   std::int64_t newest_stamp_ = 0;
   FrameId oldest_parent_ = kNoFrame;
   FrameId newest_parent_ = kNoFrame;
+  double samples_per_utime_ = 0.0;  // (count - 1) / (newest - oldest), for guessIndex()
 };
 
 }  // namespace lcmtf::detail
