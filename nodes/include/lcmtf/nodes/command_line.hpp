@@ -1,0 +1,52 @@
+#pragma once
+
+#include <iosfwd>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace lcmtf::nodes {
+
+/// Exit statuses shared by every tool.
+inline constexpr int kExitSuccess = 0;
+inline constexpr int kExitFailure = 1;       ///< the tool ran but could not do its job
+inline constexpr int kExitBadArguments = 2;  ///< the command line (or a file it names) is wrong
+
+/// A wrong command line found after parsing; what() names the argument and what is wrong.
+class CommandLineError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The lcmtf version the tools were built from ("0.1.0").
+const char* toolsVersion();
+
+/// A CLI11 app for `program` with --help, --version and a footer that explains exit statuses.
+std::unique_ptr<CLI::App> makeToolApp(const std::string& program, const std::string& description,
+                                      const std::string& examples);
+
+/// Parses `args` (without the program name). Help and version go to `out`; errors go to `err`
+/// as "program: message". Returns the exit status when the tool must not run.
+std::optional<int> parseCommandLine(CLI::App& app, const std::vector<std::string>& args,
+                                    std::ostream& out, std::ostream& err);
+
+/// Reports a CommandLineError found after parsing, like parseCommandLine does; returns 2.
+int reportBadArguments(const CLI::App& app, const std::string& message, std::ostream& err);
+
+/// The name a tool signs its messages with: "program@host:pid".
+std::string toolAuthority(const std::string& program);
+
+/// `text` as a finite number; CommandLineError "what: 'text' is not a finite number" otherwise.
+double parseFiniteNumber(const std::string& text, const std::string& what);
+
+/// Validators for numbers typed by people: finite, and finite and above zero.
+CLI::Validator finiteNumber();
+CLI::Validator positiveFiniteNumber();
+/// A validator refusing the empty string (channel and frame names).
+CLI::Validator nonEmptyName();
+
+}  // namespace lcmtf::nodes

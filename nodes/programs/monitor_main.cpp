@@ -1,0 +1,9 @@
+#include <iostream>
+
+#include "lcmtf/nodes/monitor.hpp"
+#include "lcmtf/nodes/stop_signal.hpp"
+
+int main(int argc, char** argv) {
+  const auto& stop = lcmtf::nodes::installStopSignalHandlers();
+  return lcmtf::nodes::monitorCommand({argv + 1, argv + argc}, std::cout, std::cerr, stop);
+}

@@ -1,0 +1,110 @@
+#include "lcmtf/nodes/command_line.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <ostream>
+
+namespace lcmtf::nodes {
+
+namespace {
+
+constexpr const char* kExitStatusText =
+    "Exit status: 0 on success, 1 when the tool could not do its job, 2 for a bad argument.";
+
+std::optional<double> strictNumber(const std::string& text) {
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) return std::nullopt;
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(value)) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+}  // namespace
+
+const char* toolsVersion() { return LCMTF_TOOLS_VERSION; }
+
+std::unique_ptr<CLI::App> makeToolApp(const std::string& program, const std::string& description,
+                                      const std::string& examples) {
+  auto app = std::make_unique<CLI::App>(description, program);
+  app->set_version_flag("--version", program + " (lcmtf) " + toolsVersion(),
+                        "Print the version and exit");
+  app->footer(examples + "\n\n" + kExitStatusText);
+  app->get_formatter()->column_width(34);
+  return app;
+}
+
+std::optional<int> parseCommandLine(CLI::App& app, const std::vector<std::string>& args,
+                                    std::ostream& out, std::ostream& err) {
+  std::vector<std::string> reversed;
+  for (auto arg = args.rbegin(); arg != args.rend(); ++arg) {
+    // CLI11 reads "-.5" as a short option; "-0.5" is the same number and reads as a value.
+    const bool bare_negative_fraction = arg->rfind("-.", 0) == 0 && strictNumber(*arg);
+    reversed.push_back(bare_negative_fraction ? "-0" + arg->substr(1) : *arg);
+  }
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e, out, err);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e, out, err);
+  } catch (const CLI::ParseError& e) {
+    return reportBadArguments(app, e.what(), err);
+  } catch (const CommandLineError& e) {
+    return reportBadArguments(app, e.what(), err);
+  }
+  return std::nullopt;
+}
+
+int reportBadArguments(const CLI::App& app, const std::string& message, std::ostream& err) {
+  err << app.get_name() << ": " << message << "\nRun '" << app.get_name() << " --help' for usage.\n"
+      << std::flush;
+  return kExitBadArguments;
+}
+
+double parseFiniteNumber(const std::string& text, const std::string& what) {
+  const std::optional<double> value = strictNumber(text);
+  if (!value) throw CommandLineError(what + ": '" + text + "' is not a finite number");
+  return *value;
+}
+
+CLI::Validator finiteNumber() {
+  return CLI::Validator(
+      [](std::string& text) {
+        return strictNumber(text) ? std::string() : "'" + text + "' is not a finite number";
+      },
+      "");
+}
+
+CLI::Validator nonEmptyName() {
+  return CLI::Validator(
+      [](std::string& text) { return text.empty() ? std::string("must not be empty") : ""; }, "");
+}
+
+std::string toolAuthority(const std::string& program) {
+  std::array<char, 256> host{};
+  if (gethostname(host.data(), host.size() - 1) != 0 || host[0] == '\0') {
+    return program + "@localhost:" + std::to_string(getpid());
+  }
+  return program + "@" + host.data() + ":" + std::to_string(getpid());
+}
+
+CLI::Validator positiveFiniteNumber() {
+  return CLI::Validator(
+      [](std::string& text) {
+        const std::optional<double> value = strictNumber(text);
+        return value && *value > 0.0 ? std::string()
+                                     : "'" + text + "' is not a number greater than zero";
+      },
+      "");
+}
+
+}  // namespace lcmtf::nodes

@@ -1,0 +1,236 @@
+#include "lcmtf/nodes/echo.hpp"
+
+#include <algorithm>
+#include <ostream>
+
+#include "lcmtf/nodes/pose_text.hpp"
+#include "lcmtf/transform_listener.hpp"
+
+namespace lcmtf::nodes {
+
+namespace {
+
+constexpr const char* kProgram = "lcmtf-echo";
+
+constexpr const char* kDescription =
+    "Prints the pose of FRAME in REFERENCE (the transform that maps points given in FRAME into "
+    "REFERENCE) every 1/--rate seconds: its stamp and age, translation, rotation as a "
+    "quaternion and as roll, pitch, yaw (rotation = Rz(yaw) Ry(pitch) Rx(roll)) in radians and "
+    "degrees, and the 4x4 homogeneous matrix. Until both frames are known and connected it "
+    "says on stderr what is missing.";
+
+constexpr const char* kExamples =
+    "Examples:\n"
+    "  lcmtf-echo map base_link                  latest pose, once a second\n"
+    "  lcmtf-echo --rate 10 --precision 6 base_link camera\n"
+    "  lcmtf-echo --time -0.5 odom base_link     as it was half a second ago\n"
+    "  lcmtf-echo --time 1700000000.25 --once --timeout 5 map base_link\n"
+    "                                            at that instant (a replayed log), then exit";
+
+// Longest --time before now that the buffer keeps history for, beyond the default.
+constexpr Duration kHistoryMargin = std::chrono::seconds(5);
+
+std::string knownFrames(const BufferCore& buffer) {
+  std::vector<std::string> names = buffer.getAllFrameNames();
+  std::sort(names.begin(), names.end());
+  constexpr std::size_t kShown = 30;
+  std::string list;
+  for (std::size_t i = 0; i < names.size() && i < kShown; ++i) {
+    list += (i ? ", " : "") + names[i];
+  }
+  if (names.size() > kShown) list += ", ... (" + std::to_string(names.size()) + " in all)";
+  return list;
+}
+
+class EchoLoop {
+ public:
+  EchoLoop(const EchoOptions& options, lcm::LCM& lcm, std::ostream& out, std::ostream& err)
+      : options_(options),
+        lcm_(lcm),
+        out_(out),
+        err_(err),
+        buffer_(std::max(BufferCore::kDefaultCacheTime,
+                         options.time.before_now + BufferCore::kDefaultCacheTime)),
+        listener_(buffer_, lcm, listenerOptions()) {}
+
+  int run(const std::atomic<bool>& stop) {
+    using Clock = std::chrono::steady_clock;
+    const auto period = std::chrono::duration_cast<Clock::duration>(
+        std::chrono::duration<double>(1.0 / options_.rate_hz));
+    const auto start = Clock::now();
+    auto next_tick = start + period;
+    bool printed = false;
+    while (!stop.load()) {
+      const auto wait =
+          std::chrono::duration_cast<std::chrono::milliseconds>(next_tick - Clock::now());
+      if (!handleLcmFor(lcm_, std::min(wait, std::chrono::milliseconds(50)))) {
+        err_ << kProgram << ": LCM stopped working at "
+             << describeLcmUrl(options_.connection.lcm_url) << '\n';
+        return kExitFailure;
+      }
+      const auto now_steady = Clock::now();
+      const bool tick = now_steady >= next_tick;
+      if (tick) next_tick = std::max(next_tick + period, now_steady);
+      if (printed && !tick) continue;
+      const TimePoint time = options_.time.at(now());
+      if (tryPrint(time)) {
+        if (options_.once) return kExitSuccess;
+        printed = true;
+        next_tick = now_steady + period;
+        continue;
+      }
+      std::string missing =
+          describeMissing(buffer_, options_.reference_frame, options_.frame, time, heardAnything());
+      if (!heardAnything()) missing += " on " + channels();
+      if (options_.timeout && !printed && now_steady - start >= *options_.timeout) {
+        err_ << kProgram << ": gave up after " << toString(*options_.timeout) << ": " << missing
+             << std::endl;
+        return kExitFailure;
+      }
+      if (tick) err_ << "Waiting: " << missing << std::endl;
+    }
+    return kExitSuccess;
+  }
+
+ private:
+  ListenerOptions listenerOptions() const {
+    ListenerOptions listener = listenerOptionsFor(options_.connection, kProgram);
+    std::ostream* err = &err_;
+    listener.reporter = [err](const std::string& message) {
+      *err << kProgram << ": " << message << std::endl;
+    };
+    return listener;
+  }
+
+  std::string channels() const {
+    return options_.connection.tf_channel + " or " + options_.connection.static_channel + " at " +
+           describeLcmUrl(options_.connection.lcm_url);
+  }
+
+  bool heardAnything() const {
+    const ListenerStatistics statistics = listener_.statistics();
+    return statistics.messages > 0 || statistics.malformed > 0;
+  }
+
+  bool tryPrint(TimePoint time) {
+    if (!buffer_.canTransform(options_.reference_frame, options_.frame, time)) return false;
+    try {
+      const TransformStamped reference_T_frame =
+          buffer_.lookupTransform(options_.reference_frame, options_.frame, time);
+      out_ << formatPose(reference_T_frame, now(), options_.precision) << std::flush;
+      return true;
+    } catch (const TransformException&) {
+      return false;
+    }
+  }
+
+  const EchoOptions& options_;
+  lcm::LCM& lcm_;
+  std::ostream& out_;
+  std::ostream& err_;
+  Buffer buffer_;
+  TransformListener listener_;
+};
+
+}  // namespace
+
+TimePoint EchoTime::at(TimePoint now) const {
+  switch (kind) {
+    case Kind::kFixed:
+      return fixed;
+    case Kind::kBeforeNow:
+      return now - before_now;
+    case Kind::kLatest:
+      break;
+  }
+  return kLatestTime;
+}
+
+EchoTime parseEchoTime(const std::string& text) {
+  const double seconds = parseFiniteNumber(text, "--time");
+  EchoTime time;
+  if (seconds > 0.0) {
+    if (seconds > 1e11) throw CommandLineError("--time: '" + text + "' is past the year 5000");
+    time.kind = EchoTime::Kind::kFixed;
+    time.fixed = fromSeconds(seconds);
+  } else if (seconds < 0.0) {
+    if (seconds < -86400.0) {
+      throw CommandLineError("--time: '" + text + "' is more than a day before now");
+    }
+    time.kind = EchoTime::Kind::kBeforeNow;
+    time.before_now = secondsToDuration(-seconds);
+  }
+  return time;
+}
+
+std::optional<int> parseEchoCommandLine(const std::vector<std::string>& args, EchoOptions& options,
+                                        std::ostream& out, std::ostream& err) {
+  auto app = makeToolApp(kProgram, kDescription, kExamples);
+  std::string time_text;
+  double timeout_seconds = 0.0;
+  app->add_option("REFERENCE", options.reference_frame, "Frame the pose is expressed in")
+      ->required()
+      ->check(nonEmptyName());
+  app->add_option("FRAME", options.frame, "Frame whose pose is printed")
+      ->required()
+      ->check(nonEmptyName());
+  app->add_option("--rate", options.rate_hz, "Poses printed per second")
+      ->check(positiveFiniteNumber())
+      ->check(CLI::Range(0.0, 1000.0))
+      ->type_name("HZ")
+      ->capture_default_str();
+  app->add_option("--time", time_text,
+                  "Instant to look up: seconds since the Unix epoch, or negative seconds "
+                  "before now (default: the latest data)")
+      ->type_name("SECONDS");
+  app->add_flag("--once", options.once, "Print one pose, then exit");
+  app->add_option("--precision", options.precision, "Digits after the decimal point")
+      ->check(CLI::Range(0, 15))
+      ->type_name("DIGITS")
+      ->capture_default_str();
+  auto* timeout = app->add_option("--timeout", timeout_seconds,
+                                  "Exit with status 1 if no pose could be printed within this "
+                                  "time (default: keep waiting)")
+                      ->check(positiveFiniteNumber())
+                      ->type_name("SECONDS");
+  addConnectionOptions(*app, options.connection);
+  if (auto status = parseCommandLine(*app, args, out, err)) return status;
+  try {
+    if (!time_text.empty()) options.time = parseEchoTime(time_text);
+  } catch (const CommandLineError& e) {
+    return reportBadArguments(*app, e.what(), err);
+  }
+  if (timeout->count() > 0) options.timeout = secondsToDuration(timeout_seconds);
+  return std::nullopt;
+}
+
+std::string describeMissing(const BufferCore& buffer, const std::string& reference_frame,
+                            const std::string& frame, TimePoint time, bool heard_anything) {
+  if (!heard_anything) return "no transforms received yet";
+  std::string unknown;
+  for (const std::string* name : {&reference_frame, &frame}) {
+    if (!buffer.frameExists(*name) && unknown.find("'" + *name + "'") == std::string::npos) {
+      unknown += (unknown.empty() ? "frame '" : " and frame '") + *name + "'";
+    }
+  }
+  if (!unknown.empty()) {
+    return unknown + (unknown.find(" and ") == std::string::npos ? " is" : " are") +
+           " unknown; frames heard so far: " + knownFrames(buffer);
+  }
+  std::string why;
+  if (buffer.canTransform(reference_frame, frame, time, &why)) return "available";
+  return why;
+}
+
+int runEcho(const EchoOptions& options, lcm::LCM& lcm, std::ostream& out, std::ostream& err,
+            const std::atomic<bool>& stop) {
+  EchoLoop loop(options, lcm, out, err);
+  return loop.run(stop);
+}
+
+int echoCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+                const std::atomic<bool>& stop) {
+  return parseOpenAndRun(args, kProgram, out, err, stop, &parseEchoCommandLine, &runEcho);
+}
+
+}  // namespace lcmtf::nodes

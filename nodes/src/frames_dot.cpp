@@ -1,0 +1,82 @@
+#include "lcmtf/nodes/frames_dot.hpp"
+
+#include <set>
+#include <sstream>
+
+#include "lcmtf/nodes/pose_text.hpp"
+
+namespace lcmtf::nodes {
+
+namespace {
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+// Lines joined with newlines that dotQuoted turns into Graphviz's centred line breaks.
+std::string edgeLabel(const EdgeTraffic& edge, TimePoint heard_until) {
+  const bool several = edge.authorities.size() > 1;
+  std::string label = edge.is_static ? "static\n" : "";
+  label += (several ? "broadcasters: " : "broadcaster: ") + joined(edge.authorities) + "\n";
+  if (several) label += "CONFLICT: more than one broadcaster\n";
+  if (edge.is_static) return label + "heard " + std::to_string(edge.samples) + " times";
+  label += "average rate: " + fixedDecimals(edge.rate_hz, 2) + " Hz\n";
+  label += "most recent: " + toString(edge.newest_stamp) + " (" +
+           fixedDecimals(toSeconds(heard_until - edge.newest_stamp), 3) + " s old)\n";
+  label += "buffer: " + fixedDecimals(toSeconds(edge.newest_stamp - edge.oldest_stamp), 3) +
+           " s (" + std::to_string(edge.buffered) + " samples)";
+  return label;
+}
+
+}  // namespace
+
+std::string dotQuoted(const std::string& text) {
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '\n') {
+      quoted += "\\n";
+    } else if (c == '"' || c == '\\') {
+      quoted += '\\';
+      quoted += c;
+    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      quoted += '?';
+    } else {
+      quoted += c;
+    }
+  }
+  return quoted + "\"";
+}
+
+std::string framesToDot(const TrafficSummary& summary, const std::string& caption) {
+  std::set<std::string> frames;
+  std::set<std::string> conflicted;
+  for (const EdgeTraffic& edge : summary.edges) {
+    frames.insert(edge.parent);
+    frames.insert(edge.child);
+  }
+  for (const FrameConflict& conflict : summary.conflicts) conflicted.insert(conflict.child);
+
+  std::ostringstream dot;
+  dot << "digraph lcmtf_frames {\n"
+      << "  graph [charset=\"UTF-8\", rankdir=TB, labelloc=b, fontsize=11, label="
+      << dotQuoted(caption) << "];\n"
+      << "  node [shape=box, style=rounded, fontsize=12];\n"
+      << "  edge [fontsize=9];\n";
+  for (const std::string& frame : frames) {
+    dot << "  " << dotQuoted(frame) << " [label=" << dotQuoted(frame)
+        << (conflicted.count(frame) ? ", color=red, fontcolor=red" : "") << "];\n";
+  }
+  for (const EdgeTraffic& edge : summary.edges) {
+    dot << "  " << dotQuoted(edge.parent) << " -> " << dotQuoted(edge.child)
+        << " [label=" << dotQuoted(edgeLabel(edge, summary.window_end));
+    if (edge.is_static) dot << ", style=dashed";
+    if (conflicted.count(edge.child)) dot << ", color=red, fontcolor=red";
+    dot << "];\n";
+  }
+  dot << "}\n";
+  return dot.str();
+}
+
+}  // namespace lcmtf::nodes

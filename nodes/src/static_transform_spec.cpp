@@ -1,0 +1,83 @@
+#include "lcmtf/nodes/static_transform_spec.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "lcmtf/nodes/command_line.hpp"
+
+namespace lcmtf::nodes {
+
+namespace {
+
+std::string frameName(const std::string& name, const std::string& what, const std::string& origin) {
+  const std::string bare = !name.empty() && name.front() == '/' ? name.substr(1) : name;
+  if (bare.empty()) throw CommandLineError(origin + ": " + what + " is missing or empty");
+  return bare;
+}
+
+std::string formatNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+Eigen::Quaterniond unitQuaternion(const Eigen::Vector4d& xyzw, const std::string& origin) {
+  const double norm = xyzw.norm();
+  if (std::abs(norm - 1.0) > kQuaternionNormTolerance) {
+    char norm_text[32];
+    std::snprintf(norm_text, sizeof norm_text, "%.6f", norm);
+    throw CommandLineError(origin + ": the quaternion (qx qy qz qw) = (" + formatNumber(xyzw.x()) +
+                           " " + formatNumber(xyzw.y()) + " " + formatNumber(xyzw.z()) + " " +
+                           formatNumber(xyzw.w()) + ") has norm " + norm_text +
+                           "; a rotation needs norm 1 (within 0.001)");
+  }
+  return Eigen::Quaterniond(xyzw.w(), xyzw.x(), xyzw.y(), xyzw.z()).normalized();
+}
+
+}  // namespace
+
+TransformStamped toStaticTransform(const StaticTransformSpec& spec, TimePoint stamp) {
+  TransformStamped transform;
+  transform.stamp = stamp;
+  transform.parent_frame = frameName(spec.frame_id, "the parent frame (frame_id)", spec.origin);
+  transform.child_frame =
+      frameName(spec.child_frame_id, "the child frame (child_frame_id)", spec.origin);
+  if (transform.parent_frame == transform.child_frame) {
+    throw CommandLineError(spec.origin + ": frame '" + transform.child_frame +
+                           "' cannot be its own parent");
+  }
+  if (!spec.translation.allFinite()) {
+    throw CommandLineError(spec.origin + ": the translation is not finite");
+  }
+  if (spec.quaternion_xyzw && spec.roll_pitch_yaw) {
+    throw CommandLineError(spec.origin +
+                           ": give the rotation either as a quaternion (qx qy qz qw) or as "
+                           "roll/pitch/yaw, not both");
+  }
+  transform.transform.translation = spec.translation;
+  if (spec.quaternion_xyzw) {
+    transform.transform.rotation = unitQuaternion(*spec.quaternion_xyzw, spec.origin);
+  } else if (spec.roll_pitch_yaw) {
+    transform.transform.rotation = toQuaternion(*spec.roll_pitch_yaw);
+  }
+  return transform;
+}
+
+std::vector<TransformStamped> toStaticTransforms(const std::vector<StaticTransformSpec>& specs,
+                                                 TimePoint stamp) {
+  std::vector<TransformStamped> transforms;
+  std::map<std::string, const StaticTransformSpec*> by_child;
+  for (const StaticTransformSpec& spec : specs) {
+    transforms.push_back(toStaticTransform(spec, stamp));
+    const auto [seen, inserted] = by_child.emplace(transforms.back().child_frame, &spec);
+    if (!inserted) {
+      throw CommandLineError(spec.origin + ": frame '" + seen->first +
+                             "' already has a parent, given at " + seen->second->origin +
+                             "; a frame has one parent");
+    }
+  }
+  return transforms;
+}
+
+}  // namespace lcmtf::nodes

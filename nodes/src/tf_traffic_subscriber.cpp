@@ -1,0 +1,56 @@
+#include "lcmtf/nodes/tf_traffic_subscriber.hpp"
+
+#include <exception>
+
+#include "lcmtf/resend_request_t.hpp"
+
+namespace lcmtf::nodes {
+
+namespace {
+
+// Messages LCM may queue per channel between two handle calls; bursts are counted, not lost.
+constexpr int kQueueCapacity = 10000;
+
+}  // namespace
+
+TfTrafficSubscriber::TfTrafficSubscriber(lcm::LCM& lcm, const TfConnection& connection,
+                                         TfTraffic& traffic, BatchObserver observer)
+    : lcm_(lcm), connection_(connection), traffic_(traffic), observer_(std::move(observer)) {
+  for (const std::string& channel : {connection_.tf_channel, connection_.static_channel}) {
+    lcm::Subscription* subscription =
+        lcm_.subscribe(channel, &TfTrafficSubscriber::onMessage, this);
+    subscription->setQueueCapacity(kQueueCapacity);
+    subscriptions_.push_back(subscription);
+  }
+}
+
+TfTrafficSubscriber::~TfTrafficSubscriber() {
+  for (lcm::Subscription* subscription : subscriptions_) lcm_.unsubscribe(subscription);
+}
+
+void TfTrafficSubscriber::requestStatics() {
+  resend_request_t request;
+  request.utime = toUtime(now());
+  request.requester = toolAuthority("lcmtf");
+  lcm_.publish(connection_.request_channel, &request);
+}
+
+void TfTrafficSubscriber::onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  tf_message_t batch;
+  const DecodeResult decoded = decodeMessage(buffer->data, buffer->data_size, batch);
+  if (!decoded.ok) {
+    traffic_.recordMalformed(channel, decoded.error);
+    return;
+  }
+  const bool is_static = channel == connection_.static_channel;
+  const TimePoint received = fromUtime(buffer->recv_utime);
+  // Nothing may escape into LCM's C dispatch loop.
+  try {
+    traffic_.record(batch, is_static, received);
+    if (observer_) observer_(batch, is_static, received);
+  } catch (const std::exception& e) {
+    traffic_.recordMalformed(channel, std::string("could not record: ") + e.what());
+  }
+}
+
+}  // namespace lcmtf::nodes
