@@ -1,0 +1,67 @@
+#include "demo_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace lcmtf::demo {
+
+namespace {
+
+std::string vector(const Eigen::Vector3d& v) {
+  char text[64];
+  std::snprintf(text, sizeof text, "[%6.3f %6.3f %6.3f]", v.x(), v.y(), v.z());
+  return text;
+}
+
+// Fixed-axis roll, pitch, yaw (R = Rz(yaw) Ry(pitch) Rx(roll)), as URDF writes rotations.
+Eigen::Vector3d rollPitchYaw(const Eigen::Quaterniond& rotation) {
+  const Eigen::Matrix3d r = rotation.toRotationMatrix();
+  return {std::atan2(r(2, 1), r(2, 2)), std::asin(std::clamp(-r(2, 0), -1.0, 1.0)),
+          std::atan2(r(1, 0), r(0, 0))};
+}
+
+}  // namespace
+
+std::optional<DemoReport> makeDemoReport(const BufferCore& buffer, const DemoFrames& frames,
+                                         Duration look_back,
+                                         const Eigen::Vector3d& object_in_camera,
+                                         std::string* why) {
+  try {
+    DemoReport report;
+    report.time = std::min(buffer.getLatestCommonTime(frames.fixed, frames.end_effector),
+                           buffer.getLatestCommonTime(frames.fixed, frames.camera));
+    report.seen_at = report.time - look_back;
+    if (!buffer.canTransform(frames.fixed, frames.camera, report.seen_at, why)) {
+      return std::nullopt;
+    }
+    report.base_T_end_effector =
+        buffer.lookupTransform(frames.base, frames.end_effector, report.time).transform;
+    report.object_in_camera = object_in_camera;
+    report.object_in_fixed =
+        buffer.lookupTransform(frames.fixed, frames.camera, report.seen_at).transform *
+        object_in_camera;
+    report.object_in_base =
+        buffer
+            .lookupTransform(frames.base, report.time, frames.camera, report.seen_at, frames.fixed)
+            .transform *
+        object_in_camera;
+    return report;
+  } catch (const TransformException& e) {
+    if (why) *why = e.what();
+    return std::nullopt;
+  }
+}
+
+std::string formatDemoReport(const DemoReport& report, const DemoFrames& frames) {
+  const Eigen::Vector3d rpy = rollPitchYaw(report.base_T_end_effector.rotation);
+  char age[32];
+  std::snprintf(age, sizeof age, "%.1f s", toSeconds(report.time - report.seen_at));
+  return "t=" + toString(report.time) + "  " + frames.end_effector + " in " + frames.base +
+         ": xyz " + vector(report.base_T_end_effector.translation) + "  rpy " + vector(rpy) +
+         "\n    object the camera saw " + age + " ago at " + vector(report.object_in_camera) +
+         " in " + frames.camera + ": now at " + vector(report.object_in_base) + " in " +
+         frames.base + ", " + vector(report.object_in_fixed) + " in " + frames.fixed;
+}
+
+}  // namespace lcmtf::demo

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include "lcmtf/channels.hpp"
+#include "lcmtf/robot_description_t.hpp"
+#include "lcmtf/time.hpp"
+#include "lcmtf_urdf/robot_model.hpp"
+
+namespace lcmtf::urdf {
+
+/// The robot_description_t carrying `robot`'s URDF text, signed by `authority`.
+robot_description_t makeRobotDescription(const RobotModel& robot, const std::string& authority,
+                                         TimePoint sent = now());
+
+/// Where a program that has no URDF file gets its robot from.
+struct DescriptionWaitOptions {
+  std::string channel = kRobotDescriptionChannel;
+  std::string request_channel = kRobotDescriptionRequestChannel;
+  std::string authority = defaultAuthority();                ///< signs the requests
+  Duration request_period = std::chrono::seconds(1);         ///< asks again this often
+  std::function<void(const std::string& message)> reporter;  ///< descriptions refused, and why
+};
+
+/// The first description on options.channel that makes a valid robot, asking for one at once
+/// and every request_period; refused ones are reported. Nothing once `stop` is set.
+std::optional<RobotModel> waitForRobotDescription(lcm::LCM& lcm,
+                                                  const DescriptionWaitOptions& options,
+                                                  const std::atomic<bool>& stop);
+
+}  // namespace lcmtf::urdf

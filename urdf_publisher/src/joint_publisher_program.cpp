@@ -1,0 +1,148 @@
+#include "lcmtf_urdf/joint_publisher_program.hpp"
+
+#include <iostream>
+#include <stdexcept>
+#include <thread>
+
+#include "command_line_helpers.hpp"
+#include "format_number.hpp"
+#include "lcmtf_urdf/stop_signal.hpp"
+#include "program_helpers.hpp"
+
+namespace lcmtf::urdf {
+
+namespace {
+
+constexpr const char* kProgram = "lcmtf-joint-publisher";
+// The longest a Ctrl-C waits for between two joint states at a low rate.
+constexpr auto kLongestNap = std::chrono::milliseconds(20);
+
+// "NAME=VALUE", split at the last '='.
+CLI::Validator heldJointSyntax() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const auto equals = text.rfind('=');
+        double value = 0.0;
+        if (equals == std::string::npos || equals == 0 ||
+            !CLI::detail::lexical_cast(text.substr(equals + 1), value) || !std::isfinite(value)) {
+          return "'" + text + "' is not JOINT=VALUE with a finite VALUE";
+        }
+        return std::string();
+      },
+      "JOINT=VALUE");
+}
+
+std::vector<std::pair<std::string, double>> splitHeld(const std::vector<std::string>& texts) {
+  std::vector<std::pair<std::string, double>> held;
+  for (const std::string& text : texts) {
+    const auto equals = text.rfind('=');
+    double value = 0.0;
+    CLI::detail::lexical_cast(text.substr(equals + 1), value);  // checked by heldJointSyntax
+    held.emplace_back(text.substr(0, equals), value);
+  }
+  return held;
+}
+
+void napUntil(std::chrono::steady_clock::time_point when, const std::atomic<bool>& stop) {
+  while (!stop) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now >= when) return;
+    std::this_thread::sleep_for(
+        std::min<std::chrono::steady_clock::duration>(when - now, kLongestNap));
+  }
+}
+
+}  // namespace
+
+ParsedCommandLine<JointPublisherConfig> parseJointPublisherCommandLine(
+    const std::vector<std::string>& arguments) {
+  ParsedCommandLine<JointPublisherConfig> parsed;
+  JointPublisherConfig config;
+  std::vector<std::string> held;
+
+  CLI::App app(
+      "Publishes joint states for every movable joint of a robot that follows no other: at "
+      "rest (zero, or the middle of the limits when zero is outside them), or sweeping.",
+      kProgram);
+  addRobotSourceOptions(app, {config.urdf_path, config.lcm_url, config.description_channel,
+                              config.description_request_channel, config.authority});
+  app.add_option("--channel", config.channel, "Channel of the joint states")->capture_default_str();
+  app.add_option("--rate", config.rate, "Joint states per second")
+      ->check(finiteNumberIn(0.01, 10000.0))
+      ->capture_default_str();
+  app.add_flag("--sweep", config.generator.sweep,
+               "Move every joint smoothly within its limits; continuous joints turn");
+  app.add_option("--sweep-period", config.generator.sweep_period,
+                 "Seconds of the slowest joint's swing or turn")
+      ->check(finiteNumberIn(0.1, 3600.0))
+      ->capture_default_str();
+  app.add_option("--position", held, "Hold a joint at a position (repeatable), e.g. elbow=0.5")
+      ->check(heldJointSyntax());
+  app.add_option("--duration", config.duration, "Seconds to run; 0 runs until Ctrl-C")
+      ->check(finiteNumberIn(0.0, 1e9))
+      ->capture_default_str();
+
+  if (!parseWith(app, arguments, parsed)) return parsed;
+  config.generator.held = splitHeld(held);
+  parsed.config = std::move(config);
+  return parsed;
+}
+
+int runJointPublisher(const JointPublisherConfig& config, const std::atomic<bool>& stop,
+                      std::ostream& out, std::ostream& err) {
+  const ProgramOutput output{kProgram, out, err};
+  std::optional<RobotModel> robot = loadFromFile(config.urdf_path, output);
+  if (!config.urdf_path.empty() && !robot) return 1;
+  const std::unique_ptr<lcm::LCM> lcm = openLcm(config.lcm_url, output);
+  if (!lcm) return 1;
+  if (!robot) {
+    robot = waitForDescription(*lcm, config.description_channel, config.description_request_channel,
+                               config.authority, stop, output);
+    if (!robot) return 0;
+  }
+  std::optional<JointStateGenerator> generator;
+  try {
+    generator.emplace(*robot, config.generator);
+  } catch (const std::invalid_argument& e) {
+    output.complain(std::string("--position: ") + e.what());
+    return 1;
+  }
+  output.say(std::to_string(generator->jointNames().size()) + " joints of robot '" + robot->name +
+             "' " + (config.generator.sweep ? "sweeping" : "at rest") + ", " +
+             formatNumber(config.rate) + " joint states per second on " + config.channel + " via " +
+             describeUrl(config.lcm_url));
+
+  const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+      std::chrono::duration<double>(1.0 / config.rate));
+  const auto start = std::chrono::steady_clock::now();
+  const auto end = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                               std::chrono::duration<double>(config.duration));
+  auto next = start;
+  std::uint64_t published = 0;
+  std::uint64_t failed = 0;
+  while (!stop && (config.duration <= 0.0 || std::chrono::steady_clock::now() < end)) {
+    const auto elapsed = std::chrono::steady_clock::now() - start;
+    const joint_state_t state =
+        generator->stateAt(std::chrono::duration<double>(elapsed).count(), now());
+    (lcm->publish(config.channel, &state) == 0 ? published : failed) += 1;
+    next += period;
+    const auto now_steady = std::chrono::steady_clock::now();
+    if (next + period < now_steady) next = now_steady;  // fell behind: keep the rate, not the count
+    napUntil(next, stop);
+  }
+  output.say("stopped after " + std::to_string(published) + " joint states" +
+             (failed != 0 ? ", " + std::to_string(failed) + " failed to publish" : ""));
+  return 0;
+}
+
+int jointPublisherMain(int argc, char** argv) {
+  const auto parsed =
+      parseJointPublisherCommandLine(std::vector<std::string>(argv + 1, argv + argc));
+  if (!parsed.config) {
+    (parsed.exit_code == 0 ? std::cout : std::cerr) << parsed.message;
+    return parsed.exit_code;
+  }
+  return runJointPublisher(*parsed.config, stopOnSignals(), std::cout, std::cerr);
+}
+
+}  // namespace lcmtf::urdf

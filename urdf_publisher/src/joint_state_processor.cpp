@@ -1,0 +1,314 @@
+#include "lcmtf_urdf/joint_state_processor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "lcmtf_urdf/joint_motion.hpp"
+#include "once_reporter.hpp"
+#include "publish_schedule.hpp"
+
+namespace lcmtf::urdf {
+
+namespace {
+
+enum class EntryKind : std::uint8_t { kUnknown, kDriven, kMimic, kFixed, kUnsupported };
+
+// What a joint name in a joint state refers to; `index` into the list of its kind.
+struct Entry {
+  EntryKind kind = EntryKind::kUnknown;
+  std::uint32_t index = 0;
+};
+
+// A movable joint with the frame names its transforms carry.
+struct Output {
+  MovableJoint joint;
+  std::string parent_frame;
+  std::string child_frame;
+};
+
+struct Follower {
+  std::size_t output = 0;
+  Mimic relation;
+};
+
+// A movable joint that follows no other: joint states set it, and it carries its followers.
+struct Driven {
+  std::size_t output = 0;
+  std::vector<Follower> followers;
+  PublishSchedule schedule;
+  std::uint64_t seen_in_message = 0;
+};
+
+struct Selected {
+  std::uint32_t driven = 0;
+  double position = 0.0;
+};
+
+const char* kOnce = " (reported once; later ones are only counted)";
+
+std::int64_t periodMicros(double frequency_hz) {
+  if (!(frequency_hz > 0.0) || !std::isfinite(frequency_hz)) return 0;
+  return std::max<std::int64_t>(1, std::llround(1e6 / frequency_hz));
+}
+
+void set(transform_t& out, const Output& output, const Transform& parent_T_child,
+         std::int64_t stamp) {
+  out.utime = stamp;
+  out.parent_frame = output.parent_frame;
+  out.child_frame = output.child_frame;
+  out.translation.x = parent_T_child.translation.x();
+  out.translation.y = parent_T_child.translation.y();
+  out.translation.z = parent_T_child.translation.z();
+  out.rotation.x = parent_T_child.rotation.x();
+  out.rotation.y = parent_T_child.rotation.y();
+  out.rotation.z = parent_T_child.rotation.z();
+  out.rotation.w = parent_T_child.rotation.w();
+}
+
+}  // namespace
+
+class JointStateProcessor::Impl {
+ public:
+  Impl(const RobotModel& robot, JointStateOptions options_in)
+      : options(std::move(options_in)),
+        robot_name_(robot.name),
+        period_us_(periodMicros(options.publish_frequency)),
+        reporter_(options.reporter) {
+    std::unordered_map<std::string, std::size_t> output_of;
+    for (const MovableJoint& joint : robot.movable_joints) {
+      output_of[joint.name] = outputs_.size();
+      outputs_.push_back({joint, options.frame_prefix + joint.parent_link,
+                          options.frame_prefix + joint.child_link});
+    }
+    for (std::size_t o = 0; o < outputs_.size(); ++o) {
+      const MovableJoint& joint = outputs_[o].joint;
+      if (joint.resolved_mimic) {
+        entries_[joint.name] = {EntryKind::kMimic, static_cast<std::uint32_t>(o)};
+      } else {
+        entries_[joint.name] = {EntryKind::kDriven, static_cast<std::uint32_t>(driven_.size())};
+        driven_.push_back({o, {}, {}, 0});
+      }
+    }
+    for (const Output& output : outputs_) {
+      const auto& mimic = output.joint.resolved_mimic;
+      if (!mimic) continue;
+      driven_[entries_.at(mimic->leader).index].followers.push_back(
+          {output_of.at(output.joint.name), *mimic});
+    }
+    for (const FixedJoint& joint : robot.fixed_joints)
+      entries_[joint.name] = {EntryKind::kFixed, 0};
+    for (std::uint32_t u = 0; u < robot.unsupported_joints.size(); ++u) {
+      entries_[robot.unsupported_joints[u].name] = {EntryKind::kUnsupported, u};
+      unsupported_types_.push_back(robot.unsupported_joints[u].type);
+    }
+    batch_.authority = options.authority;
+  }
+
+  const tf_message_t* process(const void* data, std::size_t size, TimePoint arrival) {
+    const DecodeResult decoded = decodeMessage(data, size, decoded_, options.limits);
+    if (!decoded.ok) {
+      ++statistics.received;
+      ++statistics.malformed;
+      reporter_.report("malformed",
+                       "refused a joint state that does not decode: " + decoded.error + kOnce);
+      return nullptr;
+    }
+    return process(decoded_, arrival);
+  }
+
+  const tf_message_t* process(const joint_state_t& state, TimePoint arrival) {
+    ++statistics.received;
+    if (state.name.size() != state.position.size()) {
+      ++statistics.length_mismatches;
+      reporter_.report("length", "refused a joint state with " + std::to_string(state.name.size()) +
+                                     " names but " + std::to_string(state.position.size()) +
+                                     " positions" + kOnce);
+      return nullptr;
+    }
+    if (!options.ignore_timestamp && state.utime <= 0) {
+      ++statistics.unstamped;
+      reporter_.report("unstamped", "refused a joint state stamped utime " +
+                                        std::to_string(state.utime) +
+                                        ": stamp it, or run with --ignore-timestamp" + kOnce);
+      return nullptr;
+    }
+    const std::int64_t stamp = options.ignore_timestamp ? toUtime(arrival) : state.utime;
+    select(state);
+    if (selected_.empty()) return nullptr;
+    if (period_us_ > 0 && !anyDue(stamp)) {
+      ++statistics.rate_limited;
+      return nullptr;
+    }
+    fill(stamp, arrival);
+    ++statistics.batches;
+    statistics.transforms += batch_.transforms.size();
+    return &batch_;
+  }
+
+  JointStateOptions options;
+  JointStateStatistics statistics;
+
+ private:
+  // Joint states usually list the same names in the same order every time: a name equal to
+  // the one at the same place last time skips the hash lookup.
+  Entry entryFor(std::size_t i, const std::string& name) {
+    if (i < cached_names_.size() && cached_names_[i] == name) return cached_entries_[i];
+    if (i >= cached_names_.size()) {
+      cached_names_.resize(i + 1);
+      cached_entries_.resize(i + 1);
+    }
+    const auto found = entries_.find(name);
+    cached_names_[i] = name;
+    cached_entries_[i] = found == entries_.end() ? Entry{} : found->second;
+    return cached_entries_[i];
+  }
+
+  void select(const joint_state_t& state) {
+    selected_.clear();
+    ++message_serial_;
+    for (std::size_t i = 0; i < state.name.size(); ++i) {
+      const std::string& name = state.name[i];
+      const Entry entry = entryFor(i, name);
+      if (entry.kind != EntryKind::kDriven) {
+        skip(entry, name);
+        continue;
+      }
+      Driven& driven = driven_[entry.index];
+      if (driven.seen_in_message == message_serial_) {
+        ++statistics.duplicate_joints;
+        reporter_.report("duplicate " + name, "joint '" + name +
+                                                  "' appears twice in one joint state; the first "
+                                                  "value is used (reported once per joint)");
+        continue;
+      }
+      driven.seen_in_message = message_serial_;
+      const double position = state.position[i];
+      if (!std::isfinite(position)) {
+        ++statistics.non_finite_positions;
+        reporter_.report("non-finite " + name,
+                         "skipped joint '" + name + "' at position " + std::to_string(position) +
+                             " (reported once per joint; later ones are only counted)");
+        continue;
+      }
+      selected_.push_back({entry.index, position});
+    }
+  }
+
+  void skip(const Entry& entry, const std::string& name) {
+    if (entry.kind == EntryKind::kUnknown) {
+      ++statistics.unknown_joints;
+      reporter_.report("unknown " + name, "ignored joint '" + name + "': robot '" + robot_name_ +
+                                              "' has no such joint (reported once per name)");
+      return;
+    }
+    ++statistics.ignored_joints;
+    std::string why;
+    if (entry.kind == EntryKind::kMimic) {
+      why = "a mimic joint, which follows '" + outputs_[entry.index].joint.resolved_mimic->leader +
+            "'";
+    } else if (entry.kind == EntryKind::kFixed) {
+      why = "a fixed joint, published once as a static transform";
+    } else {
+      why = "a " + unsupported_types_[entry.index] +
+            " joint, whose pose a joint state cannot give: publish its transform yourself";
+    }
+    reporter_.report("ignored " + name, "ignored the position of joint '" + name + "': it is " +
+                                            why + " (reported once per name)");
+  }
+
+  bool anyDue(std::int64_t stamp) const {
+    for (const Selected& s : selected_) {
+      if (driven_[s.driven].schedule.due(stamp, period_us_)) return true;
+    }
+    return false;
+  }
+
+  void fill(std::int64_t stamp, TimePoint arrival) {
+    std::size_t count = 0;
+    for (const Selected& s : selected_) {
+      Driven& driven = driven_[s.driven];
+      driven.schedule.published(stamp, period_us_);
+      count += 1 + driven.followers.size();
+    }
+    batch_.utime = toUtime(arrival);
+    batch_.transforms.resize(count);
+    batch_.num_transforms = static_cast<std::int32_t>(count);
+    std::size_t k = 0;
+    for (const Selected& s : selected_) {
+      const Driven& driven = driven_[s.driven];
+      const Output& output = outputs_[driven.output];
+      set(batch_.transforms[k++], output, parentTChild(output.joint, s.position), stamp);
+      for (const Follower& follower : driven.followers) {
+        const Output& followed = outputs_[follower.output];
+        set(batch_.transforms[k++], followed,
+            parentTChild(followed.joint, mimicPosition(follower.relation, s.position)), stamp);
+      }
+    }
+  }
+
+  std::string robot_name_;
+  std::int64_t period_us_ = 0;
+  OnceReporter reporter_;
+  std::vector<Output> outputs_;
+  std::vector<Driven> driven_;
+  std::vector<std::string> unsupported_types_;
+  std::unordered_map<std::string, Entry> entries_;
+  std::vector<std::string> cached_names_;
+  std::vector<Entry> cached_entries_;
+  std::vector<Selected> selected_;
+  std::uint64_t message_serial_ = 0;
+  joint_state_t decoded_;
+  tf_message_t batch_;
+};
+
+JointStateProcessor::JointStateProcessor(const RobotModel& robot, JointStateOptions options)
+    : impl_(std::make_unique<Impl>(robot, std::move(options))) {}
+
+JointStateProcessor::~JointStateProcessor() = default;
+
+const tf_message_t* JointStateProcessor::process(const void* data, std::size_t size,
+                                                 TimePoint arrival) {
+  return impl_->process(data, size, arrival);
+}
+
+const tf_message_t* JointStateProcessor::process(const joint_state_t& state, TimePoint arrival) {
+  return impl_->process(state, arrival);
+}
+
+const JointStateStatistics& JointStateProcessor::statistics() const { return impl_->statistics; }
+
+const JointStateOptions& JointStateProcessor::options() const { return impl_->options; }
+
+std::string describe(const JointStateStatistics& s) {
+  std::string text = std::to_string(s.received) + " joint states, " + std::to_string(s.batches) +
+                     " batches of " + std::to_string(s.transforms) + " transforms";
+  const std::pair<std::uint64_t, const char*> counts[] = {
+      {s.rate_limited, "skipped by the rate cap"},
+      {s.malformed, "malformed"},
+      {s.length_mismatches, "with names and positions differing in number"},
+      {s.unstamped, "unstamped"},
+      {s.non_finite_positions, "non-finite positions skipped"},
+      {s.unknown_joints, "unknown joint names"},
+      {s.ignored_joints, "positions of fixed, floating, planar or mimic joints ignored"},
+      {s.duplicate_joints, "repeated joints"},
+  };
+  for (const auto& [count, what] : counts) {
+    if (count != 0) text += "; " + std::to_string(count) + " " + what;
+  }
+  return text;
+}
+
+std::vector<TransformStamped> fixedJointTransforms(const RobotModel& robot,
+                                                   const std::string& frame_prefix,
+                                                   TimePoint stamp) {
+  std::vector<TransformStamped> transforms;
+  transforms.reserve(robot.fixed_joints.size());
+  for (const FixedJoint& joint : robot.fixed_joints) {
+    transforms.push_back({stamp, frame_prefix + joint.parent_link, frame_prefix + joint.child_link,
+                          joint.parent_T_child});
+  }
+  return transforms;
+}
+
+}  // namespace lcmtf::urdf

@@ -1,0 +1,55 @@
+#include "program_helpers.hpp"
+
+#include "lcmtf_urdf/robot_description.hpp"
+
+namespace lcmtf::urdf {
+
+void ProgramOutput::say(const std::string& message) const {
+  out << program << ": " << message << std::endl;
+}
+
+void ProgramOutput::complain(const std::string& message) const {
+  err << program << ": " << message << std::endl;
+}
+
+std::function<void(const std::string&)> ProgramOutput::reporter() const {
+  return [this](const std::string& message) { complain(message); };
+}
+
+std::optional<RobotModel> loadFromFile(const std::string& path, const ProgramOutput& output) {
+  if (path.empty()) return std::nullopt;
+  try {
+    return loadRobotModel(path);
+  } catch (const UrdfError& e) {
+    output.complain(e.what());
+    return std::nullopt;
+  }
+}
+
+std::unique_ptr<lcm::LCM> openLcm(const std::string& url, const ProgramOutput& output) {
+  auto lcm = std::make_unique<lcm::LCM>(url);
+  if (lcm->good()) return lcm;
+  output.complain("cannot open LCM at " + describeUrl(url));
+  return nullptr;
+}
+
+std::optional<RobotModel> waitForDescription(lcm::LCM& lcm, const std::string& channel,
+                                             const std::string& request_channel,
+                                             const std::string& authority,
+                                             const std::atomic<bool>& stop,
+                                             const ProgramOutput& output) {
+  DescriptionWaitOptions options;
+  options.channel = channel;
+  options.request_channel = request_channel;
+  options.authority = authority;
+  options.reporter = output.reporter();
+  output.say("no URDF file given: waiting for a robot description on " + channel + " (asking on " +
+             request_channel + ")");
+  return waitForRobotDescription(lcm, options, stop);
+}
+
+std::string describeUrl(const std::string& url) {
+  return url.empty() ? "LCM's default URL" : "'" + url + "'";
+}
+
+}  // namespace lcmtf::urdf

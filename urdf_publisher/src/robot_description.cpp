@@ -1,0 +1,73 @@
+#include "lcmtf_urdf/robot_description.hpp"
+
+#include "lcmtf/resend_request_t.hpp"
+#include "lcmtf/wire_decode.hpp"
+#include "once_reporter.hpp"
+
+namespace lcmtf::urdf {
+
+namespace {
+
+class DescriptionCatcher {
+ public:
+  explicit DescriptionCatcher(const DescriptionWaitOptions& options)
+      : reporter_(options.reporter) {}
+
+  void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    if (robot) return;
+    robot_description_t description;
+    const DecodeResult decoded = decodeMessage(buffer->data, buffer->data_size, description);
+    if (!decoded.ok) {
+      refuse("refused a message on " + channel + ": " + decoded.error);
+      return;
+    }
+    try {
+      robot = parseRobotModel(description.urdf, channel + " from " + description.authority);
+    } catch (const UrdfError& e) {
+      refuse(std::string("refused a robot description: ") + e.what());
+    }
+  }
+
+  std::optional<RobotModel> robot;
+
+ private:
+  // The same refusal again (a sender that keeps resending it) is not repeated.
+  void refuse(const std::string& message) { reporter_.report(message, message); }
+
+  OnceReporter reporter_;
+};
+
+}  // namespace
+
+robot_description_t makeRobotDescription(const RobotModel& robot, const std::string& authority,
+                                         TimePoint sent) {
+  robot_description_t description;
+  description.utime = toUtime(sent);
+  description.authority = authority;
+  description.robot_name = robot.name;
+  description.urdf = robot.urdf;
+  return description;
+}
+
+std::optional<RobotModel> waitForRobotDescription(lcm::LCM& lcm,
+                                                  const DescriptionWaitOptions& options,
+                                                  const std::atomic<bool>& stop) {
+  DescriptionCatcher catcher(options);
+  lcm::Subscription* subscription =
+      lcm.subscribe(options.channel, &DescriptionCatcher::onMessage, &catcher);
+  resend_request_t request;
+  request.requester = options.authority;
+  auto next_request = std::chrono::steady_clock::now();
+  while (!catcher.robot && !stop) {
+    if (std::chrono::steady_clock::now() >= next_request) {
+      request.utime = toUtime(now());
+      lcm.publish(options.request_channel, &request);
+      next_request = std::chrono::steady_clock::now() + options.request_period;
+    }
+    lcm.handleTimeout(50);
+  }
+  lcm.unsubscribe(subscription);
+  return std::move(catcher.robot);
+}
+
+}  // namespace lcmtf::urdf

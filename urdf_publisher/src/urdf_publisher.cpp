@@ -1,0 +1,66 @@
+#include "lcmtf_urdf/urdf_publisher.hpp"
+
+#include "lcmtf/resend_request_t.hpp"
+#include "lcmtf/wire_decode.hpp"
+#include "lcmtf_urdf/robot_description.hpp"
+
+namespace lcmtf::urdf {
+
+namespace {
+
+StaticBroadcasterOptions staticOptions(const UrdfPublisherOptions& options) {
+  StaticBroadcasterOptions statics;
+  statics.channel = options.tf_static_channel;
+  statics.request_channel = options.tf_static_request_channel;
+  statics.authority = options.joint_states.authority;
+  statics.resend_period = options.static_resend_period;
+  return statics;
+}
+
+}  // namespace
+
+UrdfPublisher::UrdfPublisher(lcm::LCM& lcm, RobotModel robot, UrdfPublisherOptions options)
+    : lcm_(lcm),
+      robot_(std::move(robot)),
+      options_(std::move(options)),
+      processor_(robot_, options_.joint_states),
+      statics_(lcm_, staticOptions(options_)) {
+  joint_states_ = lcm_.subscribe(options_.joint_states_channel, &UrdfPublisher::onJointState, this);
+  joint_states_->setQueueCapacity(options_.queue_capacity);
+  if (options_.publish_description) {
+    description_requests_subscription_ = lcm_.subscribe(options_.description_request_channel,
+                                                        &UrdfPublisher::onDescriptionRequest, this);
+    publishDescription();
+  }
+  const std::vector<TransformStamped> fixed =
+      fixedJointTransforms(robot_, options_.joint_states.frame_prefix);
+  if (!fixed.empty() && !statics_.sendTransform(fixed)) ++publish_failures_;
+}
+
+UrdfPublisher::~UrdfPublisher() {
+  lcm_.unsubscribe(joint_states_);
+  if (description_requests_subscription_) lcm_.unsubscribe(description_requests_subscription_);
+}
+
+void UrdfPublisher::poll() { statics_.resendIfDue(); }
+
+void UrdfPublisher::onJointState(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {
+  const tf_message_t* batch = processor_.process(buffer->data, buffer->data_size);
+  if (batch && lcm_.publish(options_.tf_channel, batch) != 0) ++publish_failures_;
+}
+
+void UrdfPublisher::onDescriptionRequest(const lcm::ReceiveBuffer* buffer,
+                                         const std::string& /*channel*/) {
+  resend_request_t request;
+  if (!decodeMessage(buffer->data, buffer->data_size, request).ok) return;
+  ++description_requests_;
+  publishDescription();
+}
+
+void UrdfPublisher::publishDescription() {
+  const robot_description_t description =
+      makeRobotDescription(robot_, options_.joint_states.authority);
+  if (lcm_.publish(options_.description_channel, &description) != 0) ++publish_failures_;
+}
+
+}  // namespace lcmtf::urdf

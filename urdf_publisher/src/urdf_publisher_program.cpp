@@ -1,0 +1,115 @@
+#include "lcmtf_urdf/urdf_publisher_program.hpp"
+
+#include <iostream>
+#include <thread>
+
+#include "command_line_helpers.hpp"
+#include "lcmtf_urdf/robot_description.hpp"
+#include "lcmtf_urdf/robot_summary.hpp"
+#include "lcmtf_urdf/stop_signal.hpp"
+#include "program_helpers.hpp"
+
+namespace lcmtf::urdf {
+
+namespace {
+
+constexpr const char* kProgram = "lcmtf-urdf-publisher";
+
+}  // namespace
+
+ParsedCommandLine<UrdfPublisherConfig> parseUrdfPublisherCommandLine(
+    const std::vector<std::string>& arguments) {
+  ParsedCommandLine<UrdfPublisherConfig> parsed;
+  UrdfPublisherConfig config;
+  UrdfPublisherOptions& p = config.publisher;
+  double resend_seconds = 1.0;
+
+  CLI::App app(
+      "Publishes a robot's frames on LCM: the fixed joints of its URDF as static transforms, "
+      "and each joint state as one batch of transforms.",
+      kProgram);
+  addRobotSourceOptions(app, {config.urdf_path, config.lcm_url, p.description_channel,
+                              p.description_request_channel, p.joint_states.authority});
+  app.add_option("--frame-prefix", p.joint_states.frame_prefix,
+                 "Written before every link name, as is (e.g. robot1/)");
+  app.add_option("--publish-frequency", p.joint_states.publish_frequency,
+                 "At most this many batches per second for each joint, on the joint states' "
+                 "stamps; 0 publishes every joint state")
+      ->check(finiteNumberIn(0.0, 1e6))
+      ->capture_default_str();
+  app.add_flag("--ignore-timestamp", p.joint_states.ignore_timestamp,
+               "Stamp transforms with the time a joint state arrives instead of its utime");
+  app.add_option("--joint-states-channel", p.joint_states_channel)->capture_default_str();
+  app.add_option("--tf-channel", p.tf_channel)->capture_default_str();
+  app.add_option("--tf-static-channel", p.tf_static_channel)->capture_default_str();
+  app.add_option("--tf-static-request-channel", p.tf_static_request_channel)->capture_default_str();
+  app.add_option("--static-resend-period", resend_seconds,
+                 "Seconds between resends of the static transforms; 0 sends them only at start "
+                 "and when a listener asks")
+      ->check(finiteNumberIn(0.0, 3600.0))
+      ->capture_default_str();
+  app.add_flag("--check", config.check_only,
+               "Read and check the URDF, say what would be published, and exit");
+
+  if (!parseWith(app, arguments, parsed)) return parsed;
+  if (config.check_only && config.urdf_path.empty()) {
+    parsed.exit_code = 2;
+    parsed.message = "--check needs a URDF file\nRun with --help for more information.\n";
+    return parsed;
+  }
+  p.static_resend_period = secondsToDuration(resend_seconds);
+  parsed.config = std::move(config);
+  return parsed;
+}
+
+int runUrdfPublisher(const UrdfPublisherConfig& config, const std::atomic<bool>& stop,
+                     std::ostream& out, std::ostream& err) {
+  const ProgramOutput output{kProgram, out, err};
+  UrdfPublisherOptions options = config.publisher;
+  options.joint_states.reporter = output.reporter();
+  const std::string& prefix = options.joint_states.frame_prefix;
+
+  std::optional<RobotModel> robot = loadFromFile(config.urdf_path, output);
+  if (!config.urdf_path.empty() && !robot) return 1;
+  if (config.check_only) {
+    out << describeRobot(*robot, prefix, true);
+    return 0;
+  }
+  const std::unique_ptr<lcm::LCM> lcm = openLcm(config.lcm_url, output);
+  if (!lcm) return 1;
+  if (!robot) {
+    robot =
+        waitForDescription(*lcm, options.description_channel, options.description_request_channel,
+                           options.joint_states.authority, stop, output);
+    if (!robot) return 0;
+    options.publish_description = false;  // it is another program's to publish
+  }
+  output.say(describeRobot(*robot, prefix) + "  joint states from " + options.joint_states_channel +
+             ", transforms to " + options.tf_channel + " and " + options.tf_static_channel +
+             ", via " + describeUrl(config.lcm_url));
+
+  UrdfPublisher publisher(*lcm, std::move(*robot), options);
+  while (!stop) {
+    if (lcm->handleTimeout(100) < 0 && !stop)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    publisher.poll();
+  }
+  std::string failures;
+  if (publisher.publishFailures() != 0) {
+    failures = "; " + std::to_string(publisher.publishFailures()) + " publications failed";
+  }
+  output.say("stopped after " + describe(publisher.statistics()) + failures);
+  return 0;
+}
+
+int urdfPublisherMain(int argc, char** argv) {
+  const auto parsed =
+      parseUrdfPublisherCommandLine(std::vector<std::string>(argv + 1, argv + argc));
+  if (!parsed.config) {
+    (parsed.exit_code == 0 ? std::cout : std::cerr) << parsed.message;
+    return parsed.exit_code;
+  }
+  return runUrdfPublisher(*parsed.config, stopOnSignals(), std::cout, std::cerr);
+}
+
+}  // namespace lcmtf::urdf
