@@ -94,13 +94,20 @@ void settleValues(WalkScratch& s) {
   detail::interpolateBatch(s.tasks.data(), s.tasks.size());
 }
 
+// q v q*, written out so that it inlines into the loop below (Eigen's own call does not).
+inline Eigen::Vector3d rotated(const Eigen::Quaterniond& q, const Eigen::Vector3d& v) {
+  const Eigen::Vector3d twice_cross = 2.0 * q.vec().cross(v);
+  return v + q.w() * twice_cross + q.vec().cross(twice_cross);
+}
+
 // The product of the steps' values, top step first: ancestor_T_frame.
 Transform composeUp(const std::vector<PathEdge>& edges) {
   if (edges.empty()) return Transform::identity();
   Transform ancestor_T_frame = *edges.front().value;
   for (auto edge = edges.begin() + 1; edge != edges.end(); ++edge) {
     const Transform& step = *edge->value;
-    ancestor_T_frame.translation = step.rotation * ancestor_T_frame.translation + step.translation;
+    ancestor_T_frame.translation =
+        rotated(step.rotation, ancestor_T_frame.translation) + step.translation;
     ancestor_T_frame.rotation = step.rotation * ancestor_T_frame.rotation;
   }
   return ancestor_T_frame;
