@@ -27,27 +27,32 @@ std::string joined(const std::vector<std::string>& items, const std::string& sep
 }
 
 // Edges depth first from the roots (frames that are nobody's child), children by name, so
-// that indenting each child by its depth draws the tree. Edges in a loop come last.
+// that indenting each child by its depth draws the tree. A frame with several parents is
+// expanded below the edge heard most; its other edges stay leaves. Edges in a loop come last.
 std::vector<std::pair<const EdgeTraffic*, int>> treeOrder(const std::vector<EdgeTraffic>& edges) {
   std::map<std::string, std::vector<const EdgeTraffic*>> children_of;
-  std::set<std::string> children;
+  std::map<std::string, const EdgeTraffic*> main_edge_of;
   for (const EdgeTraffic& edge : edges) {
     children_of[edge.parent].push_back(&edge);
-    children.insert(edge.child);
+    const EdgeTraffic*& main_edge = main_edge_of[edge.child];
+    if (!main_edge || edge.samples > main_edge->samples) main_edge = &edge;
   }
   std::vector<std::pair<const EdgeTraffic*, int>> order;
   std::set<const EdgeTraffic*> placed;
   std::function<void(const std::string&, int)> visit = [&](const std::string& frame, int depth) {
     const auto found = children_of.find(frame);
     if (found == children_of.end()) return;
-    for (const EdgeTraffic* edge : found->second) {
+    std::vector<const EdgeTraffic*> below = found->second;
+    std::stable_sort(below.begin(), below.end(),
+                     [](const EdgeTraffic* a, const EdgeTraffic* b) { return a->child < b->child; });
+    for (const EdgeTraffic* edge : below) {
       if (!placed.insert(edge).second) continue;
       order.emplace_back(edge, depth);
-      visit(edge->child, depth + 1);
+      if (main_edge_of[edge->child] == edge) visit(edge->child, depth + 1);
     }
   };
   for (const auto& [parent, edges_below] : children_of) {
-    if (!children.count(parent)) visit(parent, 0);
+    if (!main_edge_of.count(parent)) visit(parent, 0);
   }
   for (const EdgeTraffic& edge : edges) {
     if (placed.insert(&edge).second) order.emplace_back(&edge, 0);

@@ -11,7 +11,8 @@ namespace lcmtf::nodes {
 /// holds; static edges are dashed, frames sent by two authorities drawn red.
 std::string framesToDot(const TrafficSummary& summary, const std::string& caption);
 
-/// `text` as a quoted DOT string that Graphviz shows exactly as it is.
+/// `text` as a quoted DOT string that Graphviz shows as it is; control characters and
+/// malformed UTF-8 become '?'.
 std::string dotQuoted(const std::string& text);
 
 }  // namespace lcmtf::nodes

@@ -1,0 +1,176 @@
+// lcmtf-echo's logic in-process: reading --time, printing a pose, saying what is missing.
+#include "lcmtf/nodes/echo.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <sstream>
+
+#include "lcmtf/nodes/pose_text.hpp"
+#include "lcmtf/static_transform_broadcaster.hpp"
+#include "support/parsed_command_line.hpp"
+#include "support/test_lcm.hpp"
+
+namespace lcmtf::nodes {
+namespace {
+
+using testing::HasSubstr;
+
+constexpr TimePoint kStamp = fromUtime(1'700'000'000'250'000);
+
+using Parsed = lcmtf_test::ParsedCommandLine<EchoOptions>;
+
+Parsed parse(const std::vector<std::string>& args) {
+  return lcmtf_test::parseWith(&parseEchoCommandLine, args);
+}
+
+TEST(EchoTime, PositiveSecondsAreAnInstantNegativeOnesAreBeforeNowZeroIsLatest) {
+  const EchoTime fixed = parseEchoTime("1700000000.25");
+  EXPECT_EQ(fixed.kind, EchoTime::Kind::kFixed);
+  EXPECT_EQ(fixed.at(kStamp + std::chrono::seconds(3)), kStamp);
+
+  const EchoTime before = parseEchoTime("-0.5");
+  EXPECT_EQ(before.kind, EchoTime::Kind::kBeforeNow);
+  EXPECT_EQ(before.at(kStamp), kStamp - std::chrono::milliseconds(500));
+
+  EXPECT_EQ(parseEchoTime("0").at(kStamp), kLatestTime);
+  EXPECT_EQ(EchoTime{}.at(kStamp), kLatestTime);
+}
+
+TEST(EchoTime, NonsenseIsRefusedNamingTheOption) {
+  for (const char* text : {"yesterday", "nan", "", "1e300", "-100000"}) {
+    try {
+      parseEchoTime(text);
+      ADD_FAILURE() << "accepted --time " << text;
+    } catch (const CommandLineError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("--time: '" + std::string(text) + "'"));
+    }
+  }
+}
+
+TEST(EchoCommandLine, ReadsFramesAndOptions) {
+  const Parsed parsed =
+      parse({"map", "base_link", "--rate", "10", "--once", "--precision", "6", "--time", "-2",
+             "--timeout", "1.5", "--lcm-url", "memq://", "--tf-channel", "MY_TF"});
+  ASSERT_FALSE(parsed.status) << parsed.err;
+  EXPECT_EQ(parsed.options.reference_frame, "map");
+  EXPECT_EQ(parsed.options.frame, "base_link");
+  EXPECT_EQ(parsed.options.rate_hz, 10.0);
+  EXPECT_TRUE(parsed.options.once);
+  EXPECT_EQ(parsed.options.precision, 6);
+  EXPECT_EQ(parsed.options.time.before_now, std::chrono::seconds(2));
+  EXPECT_EQ(parsed.options.timeout, std::optional<Duration>(std::chrono::milliseconds(1500)));
+  EXPECT_EQ(parsed.options.connection.lcm_url, "memq://");
+  EXPECT_EQ(parsed.options.connection.tf_channel, "MY_TF");
+  EXPECT_EQ(parsed.options.connection.static_channel, "TF_STATIC");
+}
+
+TEST(EchoCommandLine, BadArgumentsAreNamed) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"map"}, "FRAME is required"},
+      {{}, "REFERENCE is required"},
+      {{"map", "base", "extra"}, "extra"},
+      {{"map", "base", "--rate", "0"}, "--rate: '0' is not a number greater than zero"},
+      {{"map", "base", "--rate", "fast"}, "--rate: 'fast'"},
+      {{"map", "base", "--rate", "5000"}, "--rate"},
+      {{"map", "base", "--precision", "40"}, "--precision"},
+      {{"map", "base", "--precision", "-1"}, "--precision"},
+      {{"map", "base", "--timeout", "-1"}, "--timeout: '-1' is not a number greater than zero"},
+      {{"map", "base", "--time", "noon"}, "--time: 'noon' is not a finite number"},
+      {{"map", "base", "--tf-channel", ""}, "--tf-channel"},
+      {{"", "base"}, "REFERENCE"},
+  };
+  for (const auto& [args, named] : cases) {
+    const Parsed parsed = parse(args);
+    EXPECT_EQ(parsed.status, std::optional<int>(kExitBadArguments)) << testing::PrintToString(args);
+    EXPECT_THAT(parsed.err, HasSubstr(named)) << testing::PrintToString(args);
+    EXPECT_THAT(parsed.err, HasSubstr("Run 'lcmtf-echo --help' for usage."));
+  }
+}
+
+TEST(PoseText, PrintsStampAgeTranslationQuaternionAnglesAndMatrix) {
+  const TransformStamped map_T_base{
+      kStamp, "map", "base",
+      Transform({1.0, -2.0, 0.5},
+                Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ())))};
+  const std::string text = formatPose(map_T_base, kStamp + std::chrono::milliseconds(12), 3);
+  EXPECT_EQ(text,
+            "At 1700000000.250000 (age 0.012000 s): 'base' in 'map'\n"
+            "  translation (m)    [1.000, -2.000, 0.500]\n"
+            "  quaternion xyzw    [0.000, 0.000, 0.707, 0.707]\n"
+            "  roll pitch yaw     [0.000, 0.000, 1.571] rad\n"
+            "                     [0.000, 0.000, 90.000] deg\n"
+            "  matrix             [ 0.000, -1.000,  0.000,  1.000]\n"
+            "                     [ 1.000,  0.000,  0.000, -2.000]\n"
+            "                     [ 0.000,  0.000,  1.000,  0.500]\n"
+            "                     [ 0.000,  0.000,  0.000,  1.000]\n");
+}
+
+TEST(PoseText, PrecisionSetsTheDigitsAndStaticChainsHaveNoStamp) {
+  const TransformStamped base_T_camera{
+      kLatestTime, "base", "camera",
+      Transform({0.123456789, 0.0, 0.0}, Eigen::Quaterniond::Identity())};
+  const std::string text = formatPose(base_T_camera, kStamp, 7);
+  EXPECT_THAT(text, HasSubstr("Static (every edge between them is static): 'camera' in 'base'"));
+  EXPECT_THAT(text, HasSubstr("[0.1234568, 0.0000000, 0.0000000]"));
+  EXPECT_EQ(fixedDecimals(-0.0004, 3), "0.000");
+  EXPECT_EQ(fixedDecimals(-0.0006, 3), "-0.001");
+}
+
+TEST(EchoMissing, SaysNothingWasHeard) {
+  BufferCore buffer;
+  EXPECT_EQ(describeMissing(buffer, "map", "base", kLatestTime, false),
+            "no transforms received yet");
+}
+
+TEST(EchoMissing, NamesUnknownFramesAndListsTheKnownOnes) {
+  BufferCore buffer;
+  buffer.setTransform({kStamp, "odom", "base", Transform()}, "test");
+  EXPECT_EQ(describeMissing(buffer, "map", "base", kLatestTime, true),
+            "frame 'map' is unknown; frames heard so far: base, odom");
+  EXPECT_EQ(describeMissing(buffer, "map", "camera", kLatestTime, true),
+            "frame 'map' and frame 'camera' are unknown; frames heard so far: base, odom");
+}
+
+TEST(EchoMissing, SaysWhyKnownFramesCannotBeLookedUp) {
+  BufferCore buffer;
+  buffer.setTransform({kStamp, "odom", "base", Transform()}, "test");
+  buffer.setTransform({kStamp, "map", "landmark", Transform()}, "test");
+  EXPECT_THAT(describeMissing(buffer, "map", "base", kLatestTime, true),
+              HasSubstr("are not connected"));
+  EXPECT_THAT(describeMissing(buffer, "odom", "base", kStamp + std::chrono::seconds(1), true),
+              HasSubstr("extrapolation into the future"));
+}
+
+TEST(Echo, RunPrintsThePoseOnceItArrives) {
+  const std::string url = lcmtf_test::privateUdpmUrl("Echo.RunPrintsThePoseOnceItArrives");
+  StaticBroadcasterOptions broadcaster_options;
+  broadcaster_options.lcm_url = url;
+  broadcaster_options.resend_period = std::chrono::milliseconds(50);
+  StaticTransformBroadcaster broadcaster(broadcaster_options);
+  broadcaster.sendTransform({kStamp, "base", "camera", Transform({0.0, 0.0, 2.0}, {1, 0, 0, 0})});
+
+  std::ostringstream out, err;
+  const std::atomic<bool> stop{false};
+  const int status = echoCommand({"--lcm-url", url, "--once", "--timeout", "10", "base", "camera"},
+                                 out, err, stop);
+  EXPECT_EQ(status, kExitSuccess) << err.str();
+  EXPECT_THAT(out.str(),
+              HasSubstr("'camera' in 'base'\n  translation (m)    [0.000, 0.000, 2.000]"));
+}
+
+TEST(Echo, RunGivesUpAfterTheTimeoutSayingWhatIsMissing) {
+  std::ostringstream out, err;
+  const std::atomic<bool> stop{false};
+  const int status = echoCommand(
+      {"--lcm-url", "memq://", "--timeout", "0.2", "--rate", "20", "map", "base"}, out, err, stop);
+  EXPECT_EQ(status, kExitFailure);
+  EXPECT_EQ(out.str(), "");
+  EXPECT_THAT(err.str(), HasSubstr("Waiting: no transforms received yet on TF or TF_STATIC at "
+                                   "memq://"));
+  EXPECT_THAT(err.str(), HasSubstr("lcmtf-echo: gave up after 0.200000 s: no transforms received"));
+}
+
+}  // namespace
+}  // namespace lcmtf::nodes

@@ -1,0 +1,152 @@
+// lcmtf-monitor's command line and report, in-process.
+#include "lcmtf/nodes/monitor.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <sstream>
+
+#include "lcmtf/nodes/monitor_report.hpp"
+
+#include "support/parsed_command_line.hpp"
+#include "support/wire_samples.hpp"
+
+namespace lcmtf::nodes {
+namespace {
+
+using lcmtf_test::wireBatch;
+using lcmtf_test::wireTransform;
+using std::chrono::milliseconds;
+using testing::HasSubstr;
+using testing::Not;
+
+constexpr TimePoint kStart = lcmtf_test::kToolsEpoch;
+
+void send(TfTraffic& traffic, const std::string& authority, std::vector<transform_t> transforms,
+          bool is_static, TimePoint received) {
+  traffic.record(wireBatch(authority, std::move(transforms)), is_static, received);
+}
+
+// A small robot: map -> odom (static), odom -> base at 50 Hz, base -> camera (static),
+// base -> arm at 10 Hz, and a second authority also sending base. The last odom -> base
+// arrives after the window, so it is buffered but not counted in rates.
+TrafficSummary robotSummary() {
+  TfTraffic traffic;
+  send(traffic, "mounts",
+       {wireTransform("map", "odom", kStart), wireTransform("base", "camera", kStart)}, true,
+       kStart);
+  for (int i = 0; i < 51; ++i) {
+    const TimePoint stamp = kStart + i * milliseconds(20);
+    send(traffic, "driver", {wireTransform("odom", "base", stamp)}, false, stamp + milliseconds(2));
+    if (i % 5 == 0)
+      send(traffic, "arm", {wireTransform("base", "arm", stamp)}, false, stamp + milliseconds(8));
+  }
+  send(traffic, "stray", {wireTransform("map", "base", kStart)}, false, kStart + milliseconds(500));
+  traffic.recordMalformed("TF", "truncated");
+  return traffic.summarize(kStart, kStart + std::chrono::seconds(1), std::chrono::seconds(10));
+}
+
+TEST(MonitorReport, FramesAreListedAsATreeWithRatesDelaysAndBuffers) {
+  const std::string report =
+      formatMonitorReport(robotSummary(), "TF and TF_STATIC at memq://", nullptr);
+  EXPECT_THAT(report, HasSubstr("Heard 5 edges from 4 authorities on TF and TF_STATIC at memq:// "
+                                "in the 1.000 s up to 1700000001.000000."));
+  // base's subtree hangs below the parent it is heard from most; the stray edge is a leaf.
+  EXPECT_THAT(
+      report,
+      HasSubstr("  frame       parent  authority  rate Hz  delay avg ms   max ms  buffered\n"
+                "  base        map     stray            -       500.000  500.000         1\n"
+                "  odom        map     mounts           -        static        -         1\n"
+                "    base      odom    driver       50.00         2.000    2.000        51\n"
+                "      arm     base    arm          10.00         8.000    8.000        11\n"
+                "      camera  base    mounts           -        static        -         1\n"));
+}
+
+TEST(MonitorReport, AuthoritiesConflictsAndProblemsAreListed) {
+  const std::string report = formatMonitorReport(robotSummary(), "TF", nullptr);
+  EXPECT_THAT(report,
+              HasSubstr("Authorities:\n"
+                        "  authority  messages  rate Hz  delay avg ms   max ms  frames\n"
+                        "  mounts            1        -        static        -  camera, odom\n"
+                        "  driver           50    50.00         2.000    2.000  base\n"
+                        "  arm              10    10.00         8.000    8.000  arm\n"
+                        "  stray             1        -       500.000  500.000  base\n"));
+  EXPECT_THAT(report, HasSubstr("Conflicts (a frame sent by more than one authority):\n"
+                                "  'base' from 'driver' (parent 'odom', dynamic, 50 transforms); "
+                                "'stray' (parent 'map', dynamic, 1 transforms)\n"));
+  EXPECT_THAT(report, HasSubstr("Problems since start (1 malformed messages, 0 invalid "
+                                "transforms, 0 refused over limits):\n"
+                                "  malformed messages (first, on TF: truncated)\n"));
+}
+
+TEST(MonitorReport, ChainAndItsNetDelayComeFirstAndItsFramesAreMarked) {
+  ChainReport chain;
+  chain.frame_a = "map";
+  chain.frame_b = "arm";
+  chain.frames = {"map", "odom", "base", "arm"};
+  chain.samples = 60;
+  chain.average_delay_s = 0.0125;
+  chain.max_delay_s = 0.03;
+  const std::string report = formatMonitorReport(robotSummary(), "TF", &chain);
+  EXPECT_THAT(report, HasSubstr("Chain from 'map' to 'arm': map -> odom -> base -> arm\n"
+                                "  net delay: average 12.500 ms, max 30.000 ms over 60 updates\n"));
+  EXPECT_THAT(report, HasSubstr("Frames (* on the chain):"));
+  EXPECT_THAT(report, HasSubstr("    base *    odom"));
+  EXPECT_THAT(report, HasSubstr("      arm *   base"));
+  EXPECT_THAT(report, HasSubstr("      camera  base"));
+  EXPECT_LT(report.find("Chain from"), report.find("Frames"));
+}
+
+TEST(MonitorReport, MissingChainSaysWhy) {
+  ChainReport chain;
+  chain.frame_a = "map";
+  chain.frame_b = "moon";
+  chain.problem = "frame chain: source frame 'moon' does not exist";
+  const std::string report = formatMonitorReport(TrafficSummary{}, "TF", &chain);
+  EXPECT_THAT(report, HasSubstr("Chain from 'map' to 'moon': none yet: frame chain: source frame "
+                                "'moon' does not exist"));
+  EXPECT_THAT(report, HasSubstr("No transforms heard in this window."));
+  EXPECT_THAT(report, Not(HasSubstr("Conflicts")));
+}
+
+using Parsed = lcmtf_test::ParsedCommandLine<MonitorOptions>;
+
+Parsed parse(const std::vector<std::string>& args) {
+  return lcmtf_test::parseWith(&parseMonitorCommandLine, args);
+}
+
+TEST(MonitorCommandLine, ReadsTheChainDurationAndContinuousMode) {
+  const Parsed parsed = parse({"map", "base", "--duration", "2.5", "-c"});
+  ASSERT_FALSE(parsed.status) << parsed.err;
+  EXPECT_EQ(parsed.options.frame_a, "map");
+  EXPECT_EQ(parsed.options.frame_b, "base");
+  EXPECT_EQ(parsed.options.duration, milliseconds(2500));
+  EXPECT_TRUE(parsed.options.continuous);
+  const Parsed defaults = parse({});
+  ASSERT_FALSE(defaults.status);
+  EXPECT_EQ(defaults.options.duration, std::chrono::seconds(5));
+  EXPECT_TRUE(defaults.options.frame_a.empty());
+  EXPECT_FALSE(defaults.options.continuous);
+}
+
+TEST(MonitorCommandLine, BadArgumentsAreNamed) {
+  EXPECT_THAT(parse({"map"}).err, HasSubstr("got 1 frame arguments: give two frames (A B)"));
+  EXPECT_THAT(parse({"a", "b", "c"}).err, HasSubstr("got 3 frame arguments"));
+  EXPECT_THAT(parse({"--duration", "0"}).err, HasSubstr("--duration: '0' is not a number greater"));
+  EXPECT_THAT(parse({"--duration", "-3"}).err, HasSubstr("--duration"));
+  EXPECT_THAT(parse({"--static-channel", ""}).err, HasSubstr("--static-channel"));
+  EXPECT_EQ(parse({"--continuous=maybe"}).status, std::optional<int>(kExitBadArguments));
+}
+
+TEST(Monitor, NothingHeardIsReportedAndExitsOne) {
+  std::ostringstream out, err;
+  const std::atomic<bool> stop{false};
+  const int status = monitorCommand({"--lcm-url", "memq://", "--duration", "0.1"}, out, err, stop);
+  EXPECT_EQ(status, kExitFailure);
+  EXPECT_THAT(out.str(), HasSubstr("No transforms heard in this window."));
+  EXPECT_THAT(err.str(), HasSubstr("lcmtf-monitor: nothing heard on TF and TF_STATIC at memq://"));
+}
+
+}  // namespace
+}  // namespace lcmtf::nodes

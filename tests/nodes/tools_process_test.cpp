@@ -1,0 +1,276 @@
+// The tools as a user runs them: real processes talking over udpm (ttl=0, a port of each
+// test's own), publishers started by the test, outputs read from the tools' stdout.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "lcmtf/buffer.hpp"
+#include "lcmtf/transform_listener.hpp"
+#include "support/test_lcm.hpp"
+#include "support/tool_process.hpp"
+
+namespace lcmtf {
+namespace {
+
+using namespace std::chrono_literals;
+using lcmtf_test::ToolProcess;
+using testing::HasSubstr;
+
+std::string testUrl() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return lcmtf_test::privateUdpmUrl(std::string(info->test_suite_name()) + "." + info->name());
+}
+
+ListenerOptions listenerOn(const std::string& url) {
+  ListenerOptions options;
+  options.lcm_url = url;
+  return options;
+}
+
+// A process publishing parent -> child on TF at `rate_hz` for `duration`, signed `authority`.
+std::unique_ptr<ToolProcess> publisher(
+    const std::string& url, const std::string& authority, double rate_hz, const std::string& parent,
+    const std::string& child, std::vector<std::string> pose = {"0", "0", "0", "0", "0", "0", "1"},
+    std::chrono::milliseconds duration = 20s) {
+  std::vector<std::string> arguments{
+      url, authority, std::to_string(rate_hz), std::to_string(duration.count()), parent, child};
+  arguments.insert(arguments.end(), pose.begin(), pose.end());
+  return std::make_unique<ToolProcess>(TF_PUBLISHER_PEER_PATH, arguments);
+}
+
+// The numbers inside the brackets after `label` on its line of the output.
+std::vector<double> numbersAfter(const std::string& text, const std::string& label) {
+  const std::size_t at = text.find(label);
+  if (at == std::string::npos) return {};
+  const std::size_t open = text.find('[', at);
+  const std::size_t close = text.find(']', open);
+  std::string inside = text.substr(open + 1, close - open - 1);
+  for (char& c : inside) c = c == ',' ? ' ' : c;
+  std::istringstream numbers(inside);
+  std::vector<double> values;
+  for (double value; numbers >> value;) values.push_back(value);
+  return values;
+}
+
+// The row of the monitor's frames table for child under parent: its cells, split on spaces.
+std::vector<std::string> frameRow(const std::string& report, const std::string& child,
+                                  const std::string& parent) {
+  std::istringstream lines(report.substr(0, report.find("Authorities:")));
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream cells(line);
+    std::vector<std::string> row;
+    for (std::string cell; cells >> cell;) row.push_back(cell);
+    if (row.size() >= 2 && row[0] == child && row[1] == parent) return row;
+  }
+  return {};
+}
+
+TEST(StaticPublisherProcess, ListenerSeesEveryTransformOfAFile) {
+  const std::string url = testUrl();
+  const std::filesystem::path directory = lcmtf_test::makeTemporaryDirectory("static-file");
+  const std::string file = (directory / "mounts.yaml").string();
+  std::ofstream(file) << "transforms:\n"
+                         "  - {frame_id: base_link, child_frame_id: camera, x: 0.2, z: 0.5, "
+                         "yaw: 1.5707963267948966}\n"
+                         "  - {frame_id: camera, child_frame_id: optical, qx: 0.5, qy: -0.5, "
+                         "qz: 0.5, qw: -0.5}\n";
+  // --period 0: the listener, started afterwards, can only get them by asking.
+  ToolProcess tool(LCMTF_STATIC_PUBLISHER_PATH,
+                   {"--lcm-url", url, "--file", file, "--period", "0"});
+  ASSERT_TRUE(tool.waitForStdout("optical", 5s)) << tool.stderrText();
+
+  Buffer buffer;
+  TransformListener listener(buffer, listenerOn(url));
+  std::string why;
+  ASSERT_TRUE(buffer.canTransform("base_link", "optical", kLatestTime, 5s, &why)) << why;
+  const Transform base_T_camera =
+      buffer.lookupTransform("base_link", "camera", kLatestTime).transform;
+  EXPECT_TRUE(base_T_camera.translation.isApprox(Eigen::Vector3d(0.2, 0.0, 0.5), 1e-15));
+  EXPECT_LT(base_T_camera.rotation.angularDistance(
+                Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()))),
+            1e-12);
+  const Transform camera_T_optical =
+      buffer.lookupTransform("camera", "optical", kLatestTime).transform;
+  EXPECT_LT(camera_T_optical.rotation.angularDistance(Eigen::Quaterniond(-0.5, 0.5, -0.5, 0.5)),
+            1e-12);
+  std::string parent;
+  ASSERT_TRUE(buffer.getParent("optical", kLatestTime, parent));
+  EXPECT_EQ(parent, "camera");
+  std::filesystem::remove_all(directory);
+}
+
+TEST(StaticPublisherProcess, ResendsPeriodicallyAndStopsCleanlyOnCtrlC) {
+  const std::string url = testUrl();
+  ToolProcess tool(LCMTF_STATIC_PUBLISHER_PATH,
+                   {"--lcm-url", url, "--period", "0.1", "--authority", "mounts", "1", "2", "3",
+                    "0.3", "0.2", "0.1", "base", "lidar"});
+  ASSERT_TRUE(tool.waitForStdout("base -> lidar", 5s)) << tool.stderrText();
+  ListenerOptions options = listenerOn(url);
+  options.static_request_channel = "NOBODY_LISTENS";  // only the resends can reach this one
+  Buffer buffer;
+  TransformListener listener(buffer, options);
+  std::string why;
+  ASSERT_TRUE(buffer.canTransform("base", "lidar", kLatestTime, 5s, &why)) << why;
+  EXPECT_THAT(buffer.allFramesAsYaml(), HasSubstr("authority: 'mounts'"));
+  const Transform base_T_lidar = buffer.lookupTransform("base", "lidar", kLatestTime).transform;
+  EXPECT_EQ(base_T_lidar.translation, Eigen::Vector3d(1.0, 2.0, 3.0));
+  const Eigen::Quaterniond expected(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) *
+                                    Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()) *
+                                    Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()));
+  EXPECT_LT(base_T_lidar.rotation.angularDistance(expected), 1e-12);
+
+  tool.interrupt();
+  EXPECT_EQ(tool.waitForExit(5s), std::optional<int>(0)) << tool.stderrText();
+  EXPECT_THAT(tool.stdoutText(), HasSubstr("Stopped after answering"));
+}
+
+TEST(EchoProcess, PrintsTheNumbersOfAKnownTransformWithItsStamp) {
+  const std::string url = testUrl();
+  ToolProcess statics(LCMTF_STATIC_PUBLISHER_PATH,
+                      {"--lcm-url", url, "0", "0", "1", "0", "0", "0", "odom", "base"});
+  // odom -> base is static; map -> odom turns a quarter about z and moves (1, 2, 0).
+  auto moving = publisher(url, "localizer", 20, "map", "odom",
+                          {"1", "2", "0", "0", "0", "0.7071067811865476", "0.7071067811865476"});
+  ToolProcess echo(LCMTF_ECHO_PATH, {"--lcm-url", url, "--once", "--precision", "6", "--timeout",
+                                     "10", "map", "base"});
+  ASSERT_EQ(echo.waitForExit(15s), std::optional<int>(0)) << echo.stderrText();
+  const std::string out = echo.stdoutText();
+  EXPECT_THAT(out, HasSubstr("'base' in 'map'"));
+  EXPECT_THAT(numbersAfter(out, "translation (m)"), testing::ElementsAre(1.0, 2.0, 1.0));
+  EXPECT_THAT(numbersAfter(out, "quaternion xyzw"),
+              testing::ElementsAre(0.0, 0.0, 0.707107, 0.707107));
+  EXPECT_THAT(numbersAfter(out, "roll pitch yaw"), testing::ElementsAre(0.0, 0.0, 1.570796));
+  EXPECT_THAT(out, HasSubstr("[0.000000, 0.000000, 90.000000] deg"));
+  EXPECT_THAT(out,
+              HasSubstr("matrix             [ 0.000000, -1.000000,  0.000000,  1.000000]\n"
+                        "                     [ 1.000000,  0.000000,  0.000000,  2.000000]\n"
+                        "                     [ 0.000000,  0.000000,  1.000000,  1.000000]\n"
+                        "                     [ 0.000000,  0.000000,  0.000000,  1.000000]\n"));
+  std::smatch stamp;
+  ASSERT_TRUE(
+      std::regex_search(out, stamp, std::regex("At ([0-9]+\\.[0-9]{6}) \\(age (-?[0-9.]+) s\\)")))
+      << out;
+  const double stamp_seconds = std::stod(stamp[1]);
+  EXPECT_NEAR(stamp_seconds, toSeconds(now()), 15.0);
+  EXPECT_LT(std::stod(stamp[2]), 1.0);
+}
+
+TEST(EchoProcess, SaysWhatIsMissingUntilTheFramesArrive) {
+  const std::string url = testUrl();
+  ToolProcess echo(LCMTF_ECHO_PATH, {"--lcm-url", url, "--rate", "20", "map", "base"});
+  ASSERT_TRUE(
+      echo.waitForStderr("Waiting: no transforms received yet on TF or TF_STATIC at " + url, 5s))
+      << echo.stderrText();
+  auto odom = publisher(url, "odometry", 50, "odom", "base");
+  ASSERT_TRUE(
+      echo.waitForStderr("Waiting: frame 'map' is unknown; frames heard so far: base, odom", 5s))
+      << echo.stderrText();
+  auto map = publisher(url, "localizer", 50, "map", "odom");
+  ASSERT_TRUE(echo.waitForStdout("'base' in 'map'", 5s)) << echo.stderrText();
+  EXPECT_FALSE(echo.waitForExit(0ms)) << "echo without --once keeps printing";
+  echo.interrupt();
+  EXPECT_EQ(echo.waitForExit(5s), std::optional<int>(0));
+}
+
+TEST(EchoProcess, GivesUpAtTheTimeoutNamingWhatIsMissing) {
+  const std::string url = testUrl();
+  auto odom = publisher(url, "odometry", 50, "odom", "base");
+  ToolProcess echo(LCMTF_ECHO_PATH,
+                   {"--lcm-url", url, "--once", "--timeout", "1", "odom", "camera"});
+  EXPECT_EQ(echo.waitForExit(10s), std::optional<int>(1));
+  EXPECT_THAT(echo.stderrText(), HasSubstr("lcmtf-echo: gave up after 1.000000 s: frame 'camera' "
+                                           "is unknown; frames heard so far: base, odom"));
+  EXPECT_EQ(echo.stdoutText(), "");
+}
+
+TEST(MonitorProcess, RatesAreWithinTenPercentAndAConflictIsShown) {
+  const std::string url = testUrl();
+  auto fast = publisher(url, "odometry", 50, "odom", "base");
+  auto slow = publisher(url, "rogue", 10, "map", "base");
+  ToolProcess statics(LCMTF_STATIC_PUBLISHER_PATH, {"--lcm-url", url, "--authority", "mounts", "0",
+                                                    "0", "1", "0", "0", "0", "base", "camera"});
+  ASSERT_TRUE(statics.waitForStdout("Publishing", 5s));
+  ToolProcess monitor(LCMTF_MONITOR_PATH, {"--lcm-url", url, "--duration", "2"});
+  ASSERT_EQ(monitor.waitForExit(15s), std::optional<int>(0)) << monitor.stderrText();
+  const std::string report = monitor.stdoutText();
+
+  const std::vector<std::string> odom_row = frameRow(report, "base", "odom");
+  ASSERT_EQ(odom_row.size(), 7u) << report;
+  EXPECT_EQ(odom_row[2], "odometry");
+  EXPECT_NEAR(std::stod(odom_row[3]), 50.0, 5.0) << report;
+  EXPECT_GE(std::stod(odom_row[4]), 0.0);
+  EXPECT_LT(std::stod(odom_row[4]), 100.0);
+  const std::vector<std::string> map_row = frameRow(report, "base", "map");
+  ASSERT_EQ(map_row.size(), 7u) << report;
+  EXPECT_NEAR(std::stod(map_row[3]), 10.0, 1.0) << report;
+  const std::vector<std::string> camera_row = frameRow(report, "camera", "base");
+  ASSERT_EQ(camera_row.size(), 7u) << report;
+  EXPECT_EQ(camera_row[2], "mounts");
+  EXPECT_EQ(camera_row[4], "static");
+
+  EXPECT_THAT(report,
+              testing::ContainsRegex(
+                  "Conflicts \\(a frame sent by more than one authority\\):\n"
+                  "  'base' from 'odometry' \\(parent 'odom', dynamic, [0-9]+ transforms\\); "
+                  "'rogue' \\(parent 'map', dynamic, [0-9]+ transforms\\)"))
+      << report;
+  EXPECT_THAT(report, testing::ContainsRegex("\n  odometry +[0-9]+ +(4[5-9]|5[0-5])\\.[0-9]{2} "));
+}
+
+TEST(MonitorProcess, ShowsTheChainAndItsNetDelay) {
+  const std::string url = testUrl();
+  auto odom = publisher(url, "odometry", 50, "odom", "base");
+  ToolProcess statics(LCMTF_STATIC_PUBLISHER_PATH,
+                      {"--lcm-url", url, "0", "0", "1", "0", "0", "0", "base", "camera"});
+  ASSERT_TRUE(statics.waitForStdout("Publishing", 5s));
+  ToolProcess monitor(LCMTF_MONITOR_PATH, {"--lcm-url", url, "--duration", "1", "odom", "camera"});
+  ASSERT_EQ(monitor.waitForExit(15s), std::optional<int>(0)) << monitor.stderrText();
+  const std::string report = monitor.stdoutText();
+  EXPECT_THAT(report, HasSubstr("Chain from 'odom' to 'camera': odom -> base -> camera\n"));
+  std::smatch delay;
+  ASSERT_TRUE(std::regex_search(report, delay,
+                                std::regex("net delay: average (-?[0-9.]+) ms, max (-?[0-9.]+) ms "
+                                           "over ([0-9]+) updates")))
+      << report;
+  EXPECT_GE(std::stod(delay[1]), 0.0);
+  EXPECT_LE(std::stod(delay[1]), std::stod(delay[2]));
+  EXPECT_LT(std::stod(delay[2]), 500.0);
+  EXPECT_GT(std::stoi(delay[3]), 20);
+  EXPECT_THAT(report, HasSubstr("Frames (* on the chain):"));
+  EXPECT_THAT(report, HasSubstr("base *"));
+}
+
+TEST(ViewFramesProcess, WritesTheTreeAsDotAndDrawsItWhenGraphvizIsThere) {
+  const std::string url = testUrl();
+  auto odom = publisher(url, "odometry", 50, "odom", "base");
+  ToolProcess statics(LCMTF_STATIC_PUBLISHER_PATH, {"--lcm-url", url, "--authority", "mounts", "0",
+                                                    "0", "1", "0", "0", "0", "base", "camera"});
+  ASSERT_TRUE(statics.waitForStdout("Publishing", 5s));
+  const std::filesystem::path directory = lcmtf_test::makeTemporaryDirectory("view-frames");
+  const std::string output = (directory / "tree").string();
+  ToolProcess view(LCMTF_VIEW_FRAMES_PATH, {"--lcm-url", url, "--wait", "1.5", "-o", output});
+  ASSERT_EQ(view.waitForExit(30s), std::optional<int>(0)) << view.stderrText();
+
+  const std::string dot = lcmtf_test::readWholeFile(output + ".gv");
+  EXPECT_THAT(dot, testing::ContainsRegex("\"odom\" -> \"base\" \\[label=\"broadcaster: odometry"
+                                          "\\\\naverage rate: (4[5-9]|5[0-5])\\.[0-9]{2} Hz"));
+  EXPECT_THAT(dot, HasSubstr("\"base\" -> \"camera\" [label=\"static\\nbroadcaster: mounts\\n"));
+  EXPECT_THAT(dot, HasSubstr("style=dashed"));
+  const std::string out = view.stdoutText();
+  EXPECT_THAT(out, HasSubstr("Heard 2 edges (1 static) from 2 broadcasters, 0 conflicts."));
+  EXPECT_THAT(out, HasSubstr("Wrote " + output + ".gv\n"));
+  if (std::filesystem::exists("/usr/bin/dot")) {
+    EXPECT_THAT(out, HasSubstr("Wrote " + output + ".pdf\n"));
+    EXPECT_THAT(out, HasSubstr("Wrote " + output + ".svg\n"));
+    EXPECT_EQ(lcmtf_test::readWholeFile(output + ".pdf").substr(0, 5), "%PDF-");
+    EXPECT_THAT(lcmtf_test::readWholeFile(output + ".svg"), HasSubstr("odometry"));
+  }
+  std::filesystem::remove_all(directory);
+}
+
+}  // namespace
+}  // namespace lcmtf
