@@ -187,6 +187,24 @@ TEST(EchoProcess, GivesUpAtTheTimeoutNamingWhatIsMissing) {
   EXPECT_EQ(echo.stdoutText(), "");
 }
 
+TEST(EchoProcess, LooksUpAFixedInstantOrAWhileAgo) {
+  const std::string url = testUrl();
+  const TimePoint instant = now() + 300ms;  // in the past once the data around it has come
+  auto map = publisher(url, "localizer", 50, "map", "base");
+  ToolProcess fixed(LCMTF_ECHO_PATH, {"--lcm-url", url, "--once", "--timeout", "10", "--time",
+                                      toString(instant), "map", "base"});
+  ToolProcess ago(LCMTF_ECHO_PATH, {"--lcm-url", url, "--once", "--timeout", "10", "--time",
+                                    "-0.25", "map", "base"});
+  ASSERT_EQ(fixed.waitForExit(15s), std::optional<int>(0)) << fixed.stderrText();
+  EXPECT_THAT(fixed.stdoutText(), HasSubstr("At " + toString(instant) + " (age "));
+  ASSERT_EQ(ago.waitForExit(15s), std::optional<int>(0)) << ago.stderrText();
+  std::smatch age;
+  const std::string out = ago.stdoutText();
+  ASSERT_TRUE(std::regex_search(out, age, std::regex("\\(age ([0-9.]+) s\\)"))) << out;
+  EXPECT_GE(std::stod(age[1]), 0.25);
+  EXPECT_LT(std::stod(age[1]), 2.0);
+}
+
 TEST(MonitorProcess, RatesAreWithinTenPercentAndAConflictIsShown) {
   const std::string url = testUrl();
   auto fast = publisher(url, "odometry", 50, "odom", "base");
@@ -242,6 +260,21 @@ TEST(MonitorProcess, ShowsTheChainAndItsNetDelay) {
   EXPECT_GT(std::stoi(delay[3]), 20);
   EXPECT_THAT(report, HasSubstr("Frames (* on the chain):"));
   EXPECT_THAT(report, HasSubstr("base *"));
+}
+
+TEST(MonitorProcess, ContinuousModeReportsEachWindowUntilStopped) {
+  const std::string url = testUrl();
+  auto odom = publisher(url, "odometry", 50, "odom", "base");
+  ToolProcess monitor(LCMTF_MONITOR_PATH, {"--lcm-url", url, "--continuous", "--duration", "0.4"});
+  ASSERT_TRUE(monitor.waitForStdout("----\n", 10s, 3)) << monitor.stderrText();
+  monitor.interrupt();
+  EXPECT_EQ(monitor.waitForExit(5s), std::optional<int>(0)) << monitor.stderrText();
+  const std::string out = monitor.stdoutText();
+  const std::string last_full_report = out.substr(out.rfind("Heard", out.rfind("----")));
+  const std::vector<std::string> row = frameRow(last_full_report, "base", "odom");
+  ASSERT_EQ(row.size(), 7u) << out;
+  EXPECT_NEAR(std::stod(row[3]), 50.0, 10.0) << out;
+  EXPECT_THAT(last_full_report, HasSubstr("in the 0.4"));
 }
 
 TEST(ViewFramesProcess, WritesTheTreeAsDotAndDrawsItWhenGraphvizIsThere) {

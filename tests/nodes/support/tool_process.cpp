@@ -91,8 +91,19 @@ std::optional<int> ToolProcess::waitForExit(std::chrono::milliseconds timeout) {
   return status_;
 }
 
-bool ToolProcess::waitForStdout(const std::string& text, std::chrono::milliseconds timeout) const {
-  return poll([&] { return stdoutText().find(text) != std::string::npos; }, timeout);
+bool ToolProcess::waitForStdout(const std::string& text, std::chrono::milliseconds timeout,
+                                std::size_t occurrences) const {
+  return poll(
+      [&] {
+        const std::string out = stdoutText();
+        std::size_t found = 0;
+        for (std::size_t at = out.find(text); at != std::string::npos;
+             at = out.find(text, at + 1)) {
+          ++found;
+        }
+        return found >= occurrences;
+      },
+      timeout);
 }
 
 bool ToolProcess::waitForStderr(const std::string& text, std::chrono::milliseconds timeout) const {

@@ -22,8 +22,9 @@ class ToolProcess {
 
   /// The exit status (128 + signal when killed) once it exits within `timeout`.
   std::optional<int> waitForExit(std::chrono::milliseconds timeout);
-  /// Whether `text` shows up in stdout (or stderr) within `timeout`.
-  bool waitForStdout(const std::string& text, std::chrono::milliseconds timeout) const;
+  /// Whether `text` shows up in stdout (`occurrences` times) or stderr within `timeout`.
+  bool waitForStdout(const std::string& text, std::chrono::milliseconds timeout,
+                     std::size_t occurrences = 1) const;
   bool waitForStderr(const std::string& text, std::chrono::milliseconds timeout) const;
   /// Sends SIGINT, as Ctrl-C does.
   void interrupt() const;
