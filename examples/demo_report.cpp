@@ -59,9 +59,9 @@ std::string formatDemoReport(const DemoReport& report, const DemoFrames& frames)
   std::snprintf(age, sizeof age, "%.1f s", toSeconds(report.time - report.seen_at));
   return "t=" + toString(report.time) + "  " + frames.end_effector + " in " + frames.base +
          ": xyz " + vector(report.base_T_end_effector.translation) + "  rpy " + vector(rpy) +
-         "\n    object the camera saw " + age + " ago at " + vector(report.object_in_camera) +
-         " in " + frames.camera + ": now at " + vector(report.object_in_base) + " in " +
-         frames.base + ", " + vector(report.object_in_fixed) + " in " + frames.fixed;
+         "\n    what the camera saw " + age + " ago at " + vector(report.object_in_camera) +
+         " in " + frames.camera + " is now at " + vector(report.object_in_base) + " in " +
+         frames.base + " (" + vector(report.object_in_fixed) + " in " + frames.fixed + ")";
 }
 
 }  // namespace lcmtf::demo

@@ -1,9 +1,63 @@
 #!/usr/bin/env bash
-# Builds lcmtf (installing what it needs) and runs the demo; arguments go to the demo.
+# Builds lcmtf (installing what it needs) and runs the demo robot of examples/: the joint
+# publisher sweeps its joints, the URDF publisher turns them into transforms, and a listener
+# prints where the gripper is and where an object the camera saw 2 s ago is now.
+#
+#   scripts/demo.sh [--duration SECONDS] [--lcm-url URL]
+#
+# Runs until Ctrl-C, or for SECONDS; the default URL keeps all traffic on this machine (ttl=0).
+# With LCMTF_DEMO_BIN=DIR it uses the programs built in DIR instead of building.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
 
-cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release
-cmake --build build/release -j"${LCMTF_JOBS:-2}" --target lcmtf_round_trip
-exec build/release/bin/lcmtf_round_trip "$@"
+duration=0
+url='udpm://239.255.76.67:7667?ttl=0'
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --duration) duration=${2:?--duration needs a number of seconds}; shift 2 ;;
+    --lcm-url) url=${2:?--lcm-url needs a URL}; shift 2 ;;
+    -h | --help) sed -n '2,9p' "$0" | cut -c3-; exit 0 ;;
+    *) echo "demo.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
+
+if [ -n "${LCMTF_DEMO_BIN:-}" ]; then
+  bin=$LCMTF_DEMO_BIN
+else
+  scripts/install-deps.sh
+  cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release
+  cmake --build build/release -j"${LCMTF_JOBS:-2}" \
+    --target lcmtf-urdf-publisher lcmtf-joint-publisher lcmtf_demo_listener
+  bin=build/release/bin
+fi
+robot=examples/mobile_manipulator.urdf
+
+declare -A names=()
+stop_children() {
+  trap - EXIT INT TERM
+  for pid in "${!names[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
+  for pid in "${!names[@]}"; do wait "$pid" 2>/dev/null || true; done
+}
+trap stop_children EXIT
+trap 'stop_children; exit 130' INT
+trap 'stop_children; exit 143' TERM
+
+start() {
+  "$@" &
+  names[$!]=$(basename "$1")
+}
+start "$bin/lcmtf-urdf-publisher" --lcm-url "$url" "$robot"
+start "$bin/lcmtf-joint-publisher" --lcm-url "$url" --sweep "$robot"
+start "$bin/lcmtf_demo_listener" --lcm-url "$url" --duration "$duration"
+listener=$!
+
+# The first program to stop ends the demo: the listener at the end of --duration, or another
+# that failed (its message is above).
+status=0
+wait -n -p finished "${!names[@]}" || status=$?
+if [ "$finished" != "$listener" ]; then
+  echo "demo.sh: ${names[$finished]} stopped (status $status); stopping the demo" >&2
+  [ "$status" -ne 0 ] || status=1
+fi
+unset "names[$finished]"
+exit "$status"

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "joint_state_helpers.hpp"
 #include "lcmtf/buffer_core.hpp"
 #include "lcmtf/message_conversions.hpp"
 #include "lcmtf_urdf/joint_state_processor.hpp"
@@ -18,6 +19,7 @@
 namespace lcmtf::urdf {
 namespace {
 
+using lcmtf_test::jointState;
 using lcmtf_test::near;
 using lcmtf_test::ReferenceJoint;
 using lcmtf_test::ReferenceRobot;
@@ -56,20 +58,6 @@ std::vector<Configuration> configurations(const ReferenceRobot& robot) {
   return result;
 }
 
-joint_state_t jointState(const Positions& positions) {
-  joint_state_t state;
-  state.utime = kStamp;
-  for (const auto& [name, position] : positions) {
-    state.name.push_back(name);
-    state.position.push_back(position);
-  }
-  state.num_joints = static_cast<std::int32_t>(state.name.size());
-  state.num_positions = static_cast<std::int32_t>(state.position.size());
-  state.num_velocities = 0;
-  state.num_efforts = 0;
-  return state;
-}
-
 class RealRobotKinematics : public testing::TestWithParam<const char*> {
  protected:
   void SetUp() override {
@@ -90,7 +78,7 @@ TEST_P(RealRobotKinematics, EveryPublishedTransformEqualsTheReferencePose) {
   for (const Configuration& configuration : configurations(reference)) {
     SCOPED_TRACE(configuration.label);
     JointStateProcessor processor(robot);
-    const tf_message_t* batch = processor.process(jointState(configuration.positions));
+    const tf_message_t* batch = processor.process(jointState(kStamp, configuration.positions));
     ASSERT_NE(batch, nullptr);
     EXPECT_EQ(batch->transforms.size(), movable);
     for (const transform_t& published : batch->transforms) {
@@ -130,7 +118,7 @@ TEST_P(RealRobotKinematics, LookupsFromTheRootToEveryLinkEqualTheReferenceChain)
               robot.fixed_joints.size());
     JointStateProcessor processor(robot);
     for (const transform_t& published :
-         processor.process(jointState(configuration.positions))->transforms) {
+         processor.process(jointState(kStamp, configuration.positions))->transforms) {
       ASSERT_TRUE(buffer.setTransform(fromMessage(published), "test"));
     }
     for (const std::string& link : reference.links()) {
@@ -158,7 +146,7 @@ TEST(ExampleRobotKinematics, TheDemoRobotsGripperFingersMirrorEachOther) {
   for (const ReferenceJoint& joint : reference.joints()) {
     if (joint.driven()) positions[joint.name] = joint.has_limits ? 0.7 * joint.upper : 1.0;
   }
-  const tf_message_t* batch = processor.process(jointState(positions));
+  const tf_message_t* batch = processor.process(jointState(kStamp, positions));
   ASSERT_NE(batch, nullptr);
   std::map<std::string, Transform> by_child;
   for (const transform_t& published : batch->transforms) {

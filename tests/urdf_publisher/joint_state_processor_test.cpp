@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "joint_state_helpers.hpp"
 #include "lcmtf/message_conversions.hpp"
 #include "lcmtf_urdf/joint_motion.hpp"
 #include "lcmtf_urdf/joint_state_processor.hpp"
@@ -18,6 +19,7 @@
 namespace lcmtf::urdf {
 namespace {
 
+using lcmtf_test::jointState;
 using testing::ElementsAre;
 using testing::HasSubstr;
 using testing::UnorderedElementsAre;
@@ -25,19 +27,6 @@ using testing::UnorderedElementsAre;
 constexpr std::int64_t kStamp = 1'700'000'000'000'000;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-joint_state_t jointState(std::int64_t utime, const std::vector<std::string>& names,
-                         const std::vector<double>& positions) {
-  joint_state_t state;
-  state.utime = utime;
-  state.name = names;
-  state.position = positions;
-  state.num_joints = static_cast<std::int32_t>(names.size());
-  state.num_positions = static_cast<std::int32_t>(positions.size());
-  state.num_velocities = 0;
-  state.num_efforts = 0;
-  return state;
-}
 
 std::vector<std::string> children(const tf_message_t* batch) {
   std::vector<std::string> result;

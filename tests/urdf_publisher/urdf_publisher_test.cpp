@@ -12,6 +12,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include "joint_state_helpers.hpp"
 #include "lcmtf/message_conversions.hpp"
 #include "lcmtf/transform_listener.hpp"
 #include "lcmtf/wire_decode.hpp"
@@ -22,6 +23,7 @@
 namespace lcmtf::urdf {
 namespace {
 
+using lcmtf_test::jointState;
 using namespace std::chrono_literals;
 using testing::HasSubstr;
 
@@ -41,20 +43,6 @@ struct Recorder {
   std::vector<Message> messages;
   int undecodable = 0;
 };
-
-joint_state_t jointState(std::int64_t utime, const std::map<std::string, double>& positions) {
-  joint_state_t state;
-  state.utime = utime;
-  for (const auto& [name, position] : positions) {
-    state.name.push_back(name);
-    state.position.push_back(position);
-  }
-  state.num_joints = static_cast<std::int32_t>(state.name.size());
-  state.num_positions = static_cast<std::int32_t>(state.position.size());
-  state.num_velocities = 0;
-  state.num_efforts = 0;
-  return state;
-}
 
 resend_request_t request() {
   resend_request_t message;

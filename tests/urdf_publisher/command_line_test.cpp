@@ -1,0 +1,279 @@
+// Both programs' command lines, and their run functions in-process: what they print, when
+// they refuse to start and with what exit code.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdio>
+#include <fstream>
+#include <future>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "lcmtf_urdf/joint_publisher_program.hpp"
+#include "lcmtf_urdf/urdf_publisher_program.hpp"
+
+namespace lcmtf::urdf {
+namespace {
+
+using namespace std::chrono_literals;
+using testing::HasSubstr;
+using testing::StartsWith;
+
+TEST(UrdfPublisherCommandLine, DefaultsFollowTheProjectsChannelsAndPublishEveryState) {
+  const auto parsed = parseUrdfPublisherCommandLine({"robot.urdf"});
+  ASSERT_TRUE(parsed.config) << parsed.message;
+  const UrdfPublisherConfig& config = *parsed.config;
+  EXPECT_EQ(config.urdf_path, "robot.urdf");
+  EXPECT_EQ(config.lcm_url, "");
+  EXPECT_FALSE(config.check_only);
+  const UrdfPublisherOptions& p = config.publisher;
+  EXPECT_EQ(p.joint_states.publish_frequency, 0.0);
+  EXPECT_EQ(p.joint_states.frame_prefix, "");
+  EXPECT_FALSE(p.joint_states.ignore_timestamp);
+  EXPECT_THAT(p.joint_states.authority, StartsWith("lcmtf-urdf-publisher@"));
+  EXPECT_EQ(p.joint_states_channel, "JOINT_STATES");
+  EXPECT_EQ(p.tf_channel, "TF");
+  EXPECT_EQ(p.tf_static_channel, "TF_STATIC");
+  EXPECT_EQ(p.tf_static_request_channel, "TF_STATIC_REQUEST");
+  EXPECT_EQ(p.description_channel, "ROBOT_DESCRIPTION");
+  EXPECT_EQ(p.description_request_channel, "ROBOT_DESCRIPTION_REQUEST");
+  EXPECT_EQ(p.static_resend_period, std::chrono::seconds(1));
+  EXPECT_TRUE(p.publish_description);
+}
+
+TEST(UrdfPublisherCommandLine, EveryOptionIsRead) {
+  const auto parsed = parseUrdfPublisherCommandLine({"--lcm-url",
+                                                     "memq://",
+                                                     "--frame-prefix",
+                                                     "r1/",
+                                                     "--publish-frequency",
+                                                     "30",
+                                                     "--ignore-timestamp",
+                                                     "--authority",
+                                                     "me",
+                                                     "--joint-states-channel",
+                                                     "J",
+                                                     "--tf-channel",
+                                                     "T",
+                                                     "--tf-static-channel",
+                                                     "TS",
+                                                     "--tf-static-request-channel",
+                                                     "TSR",
+                                                     "--description-channel",
+                                                     "D",
+                                                     "--description-request-channel",
+                                                     "DR",
+                                                     "--static-resend-period",
+                                                     "0.25",
+                                                     "--check",
+                                                     "robot.urdf"});
+  ASSERT_TRUE(parsed.config) << parsed.message;
+  const UrdfPublisherOptions& p = parsed.config->publisher;
+  EXPECT_EQ(parsed.config->lcm_url, "memq://");
+  EXPECT_TRUE(parsed.config->check_only);
+  EXPECT_EQ(p.joint_states.frame_prefix, "r1/");
+  EXPECT_EQ(p.joint_states.publish_frequency, 30.0);
+  EXPECT_TRUE(p.joint_states.ignore_timestamp);
+  EXPECT_EQ(p.joint_states.authority, "me");
+  EXPECT_EQ(p.joint_states_channel, "J");
+  EXPECT_EQ(p.tf_channel, "T");
+  EXPECT_EQ(p.tf_static_channel, "TS");
+  EXPECT_EQ(p.tf_static_request_channel, "TSR");
+  EXPECT_EQ(p.description_channel, "D");
+  EXPECT_EQ(p.description_request_channel, "DR");
+  EXPECT_EQ(p.static_resend_period, std::chrono::milliseconds(250));
+}
+
+TEST(UrdfPublisherCommandLine, HelpExitsZeroAndNamesEveryOption) {
+  const auto parsed = parseUrdfPublisherCommandLine({"--help"});
+  EXPECT_FALSE(parsed.config);
+  EXPECT_EQ(parsed.exit_code, 0);
+  for (const char* option : {"--lcm-url", "--frame-prefix", "--publish-frequency",
+                             "--ignore-timestamp", "--check", "--description-channel"}) {
+    EXPECT_THAT(parsed.message, HasSubstr(option));
+  }
+}
+
+TEST(UrdfPublisherCommandLine, BadValuesExitTwoNamingTheOption) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"--publish-frequency", "nan", "r.urdf"},
+       "--publish-frequency: 'nan' is not a finite number"},
+      {{"--publish-frequency", "-1", "r.urdf"}, "--publish-frequency: -1 is outside [0, 1e+06]"},
+      {{"--publish-frequency", "fast", "r.urdf"}, "'fast' is not a finite number"},
+      {{"--static-resend-period", "inf", "r.urdf"}, "'inf' is not a finite number"},
+      {{"--frobnicate", "r.urdf"}, "--frobnicate"},
+      {{"a.urdf", "b.urdf"}, "b.urdf"},
+      {{"--check"}, "--check needs a URDF file"},
+  };
+  for (const auto& [arguments, expected] : cases) {
+    const auto parsed = parseUrdfPublisherCommandLine(arguments);
+    EXPECT_FALSE(parsed.config) << expected;
+    EXPECT_EQ(parsed.exit_code, 2) << expected;
+    EXPECT_THAT(parsed.message, HasSubstr(expected));
+  }
+}
+
+TEST(JointPublisherCommandLine, DefaultsAreRestAtFiftyHertzUntilStopped) {
+  const auto parsed = parseJointPublisherCommandLine({"robot.urdf"});
+  ASSERT_TRUE(parsed.config) << parsed.message;
+  EXPECT_EQ(parsed.config->rate, 50.0);
+  EXPECT_EQ(parsed.config->duration, 0.0);
+  EXPECT_EQ(parsed.config->channel, "JOINT_STATES");
+  EXPECT_FALSE(parsed.config->generator.sweep);
+  EXPECT_EQ(parsed.config->generator.sweep_period, 8.0);
+  EXPECT_TRUE(parsed.config->generator.held.empty());
+  EXPECT_THAT(parsed.config->authority, StartsWith("lcmtf-joint-publisher@"));
+}
+
+TEST(JointPublisherCommandLine, PositionsAreSplitAtTheLastEqualsSign) {
+  const auto parsed = parseJointPublisherCommandLine(
+      {"--sweep", "--sweep-period", "3", "--rate", "200", "--duration", "1.5", "--position",
+       "elbow_joint=0.5", "--position", "odd=name=-2e-3", "--channel", "ARM", "r.urdf"});
+  ASSERT_TRUE(parsed.config) << parsed.message;
+  const JointPublisherConfig& config = *parsed.config;
+  EXPECT_TRUE(config.generator.sweep);
+  EXPECT_EQ(config.generator.sweep_period, 3.0);
+  EXPECT_EQ(config.rate, 200.0);
+  EXPECT_EQ(config.duration, 1.5);
+  EXPECT_EQ(config.channel, "ARM");
+  ASSERT_EQ(config.generator.held.size(), 2u);
+  EXPECT_EQ(config.generator.held[0], std::make_pair(std::string("elbow_joint"), 0.5));
+  EXPECT_EQ(config.generator.held[1], std::make_pair(std::string("odd=name"), -2e-3));
+}
+
+TEST(JointPublisherCommandLine, BadValuesExitTwoNamingTheOption) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"--rate", "0", "r.urdf"}, "--rate: 0 is outside [0.01, 10000]"},
+      {{"--rate", "inf", "r.urdf"}, "'inf' is not a finite number"},
+      {{"--position", "elbow", "r.urdf"}, "'elbow' is not JOINT=VALUE"},
+      {{"--position", "=1", "r.urdf"}, "'=1' is not JOINT=VALUE"},
+      {{"--position", "elbow=nan", "r.urdf"}, "'elbow=nan' is not JOINT=VALUE with a finite VALUE"},
+      {{"--sweep-period", "0", "r.urdf"}, "--sweep-period: 0 is outside"},
+      {{"--duration", "-1", "r.urdf"}, "--duration: -1 is outside"},
+  };
+  for (const auto& [arguments, expected] : cases) {
+    const auto parsed = parseJointPublisherCommandLine(arguments);
+    EXPECT_FALSE(parsed.config) << expected;
+    EXPECT_EQ(parsed.exit_code, 2) << expected;
+    EXPECT_THAT(parsed.message, HasSubstr(expected));
+  }
+}
+
+struct ProgramRun {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+ProgramRun runUrdfPublisherWith(const std::vector<std::string>& arguments,
+                                std::chrono::milliseconds stop_after = 0ms) {
+  const auto parsed = parseUrdfPublisherCommandLine(arguments);
+  EXPECT_TRUE(parsed.config) << parsed.message;
+  std::atomic<bool> stop{stop_after == 0ms};
+  std::ostringstream out;
+  std::ostringstream err;
+  auto running = std::async(std::launch::async,
+                            [&] { return runUrdfPublisher(*parsed.config, stop, out, err); });
+  std::this_thread::sleep_for(stop_after);
+  stop = true;
+  ProgramRun run;
+  run.exit_code = running.get();
+  run.out = out.str();
+  run.err = err.str();
+  return run;
+}
+
+TEST(UrdfPublisherRun, MissingFileExitsOneNamingIt) {
+  const ProgramRun run = runUrdfPublisherWith({"/nonexistent/robot.urdf"});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.err,
+            "lcmtf-urdf-publisher: /nonexistent/robot.urdf: cannot open: No such file or "
+            "directory\n");
+}
+
+TEST(UrdfPublisherRun, UnusableLcmUrlExitsOneNamingIt) {
+  const ProgramRun run = runUrdfPublisherWith({"--lcm-url", "nonsense://", EXAMPLE_URDF});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.err, "lcmtf-urdf-publisher: cannot open LCM at 'nonsense://'\n");
+}
+
+TEST(UrdfPublisherRun, CheckListsTheRobotAndExitsZero) {
+  const ProgramRun run = runUrdfPublisherWith({"--check", "--frame-prefix", "r1/", EXAMPLE_URDF});
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_THAT(run.out, HasSubstr("robot 'mobile_manipulator' from " + std::string(EXAMPLE_URDF) +
+                                 ": 26 links, root 'r1/odom'"));
+  EXPECT_THAT(run.out, HasSubstr("revolute elbow_joint: r1/upper_arm_link -> r1/forearm_link"));
+  EXPECT_EQ(run.err, "");
+}
+
+TEST(UrdfPublisherRun, RunsUntilStoppedThenSaysWhatItHandled) {
+  const ProgramRun run = runUrdfPublisherWith({"--lcm-url", "memq://", EXAMPLE_URDF}, 150ms);
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_THAT(run.out, HasSubstr("joint states from JOINT_STATES, transforms to TF and TF_STATIC, "
+                                 "via 'memq://'"));
+  EXPECT_THAT(run.out, HasSubstr("lcmtf-urdf-publisher: stopped after 0 joint states, 0 batches "
+                                 "of 0 transforms"));
+}
+
+TEST(UrdfPublisherRun, WithoutAFileItWaitsForADescriptionUntilStopped) {
+  const ProgramRun run = runUrdfPublisherWith({"--lcm-url", "memq://"}, 150ms);
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_THAT(run.out, HasSubstr("no URDF file given: waiting for a robot description on "
+                                 "ROBOT_DESCRIPTION (asking on ROBOT_DESCRIPTION_REQUEST)"));
+}
+
+ProgramRun runJointPublisherWith(const std::vector<std::string>& arguments) {
+  const auto parsed = parseJointPublisherCommandLine(arguments);
+  EXPECT_TRUE(parsed.config) << parsed.message;
+  const std::atomic<bool> stop{false};
+  std::ostringstream out;
+  std::ostringstream err;
+  ProgramRun run;
+  run.exit_code = runJointPublisher(*parsed.config, stop, out, err);
+  run.out = out.str();
+  run.err = err.str();
+  return run;
+}
+
+TEST(JointPublisherRun, PublishesAtItsRateForItsDuration) {
+  const ProgramRun run = runJointPublisherWith(
+      {"--lcm-url", "memq://", "--rate", "100", "--duration", "0.3", "--sweep", EXAMPLE_URDF});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("14 joints of robot 'mobile_manipulator' sweeping, 100 joint "
+                                 "states per second on JOINT_STATES via 'memq://'"));
+  const auto at = run.out.find("stopped after ");
+  ASSERT_NE(at, std::string::npos) << run.out;
+  const int published = std::stoi(run.out.substr(at + 14));
+  EXPECT_GE(published, 10);  // a busy machine may publish late, never more often
+  EXPECT_LE(published, 31);
+}
+
+TEST(JointPublisherRun, HoldingAnUnknownJointExitsOneNamingIt) {
+  const ProgramRun run = runJointPublisherWith(
+      {"--lcm-url", "memq://", "--position", "knee=0.1", "--duration", "5", EXAMPLE_URDF});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.err,
+            "lcmtf-joint-publisher: --position: robot 'mobile_manipulator' has no movable joint "
+            "'knee'\n");
+}
+
+TEST(JointPublisherRun, InvalidUrdfExitsOneNamingTheFileAndProblem) {
+  const std::string path = testing::TempDir() + "/zero_axis.urdf";
+  {
+    std::ofstream(path) << "<robot name='r'><link name='a'/><link name='b'/><joint name='j' "
+                           "type='continuous'><parent link='a'/><child link='b'/>"
+                           "<axis xyz='0 0 0'/></joint></robot>";
+  }
+  const ProgramRun run = runJointPublisherWith({"--lcm-url", "memq://", path});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.err, "lcmtf-joint-publisher: " + path +
+                         ": joint 'j' has a zero axis (0 0 0): it cannot say which way the "
+                         "joint moves\n");
+  std::remove(path.c_str());
+}
+
+}  // namespace
+}  // namespace lcmtf::urdf
