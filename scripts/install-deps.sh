@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config
   liblcm-dev liblcm-bin liblcm-java libglib2.0-dev
-  libeigen3-dev liburdfdom-dev libcli11-dev libyaml-cpp-dev graphviz
+  libeigen3-dev liburdfdom-dev libtinyxml-dev libcli11-dev libyaml-cpp-dev graphviz
   libgtest-dev libgmock-dev libbenchmark-dev
   default-jdk-headless libjchart2d-java
   clang libclang-rt-14-dev
