@@ -43,8 +43,9 @@ std::vector<std::pair<const EdgeTraffic*, int>> treeOrder(const std::vector<Edge
     const auto found = children_of.find(frame);
     if (found == children_of.end()) return;
     std::vector<const EdgeTraffic*> below = found->second;
-    std::stable_sort(below.begin(), below.end(),
-                     [](const EdgeTraffic* a, const EdgeTraffic* b) { return a->child < b->child; });
+    std::stable_sort(below.begin(), below.end(), [](const EdgeTraffic* a, const EdgeTraffic* b) {
+      return a->child < b->child;
+    });
     for (const EdgeTraffic* edge : below) {
       if (!placed.insert(edge).second) continue;
       order.emplace_back(edge, depth);

@@ -28,10 +28,10 @@ TfTrafficSubscriber::~TfTrafficSubscriber() {
   for (lcm::Subscription* subscription : subscriptions_) lcm_.unsubscribe(subscription);
 }
 
-void TfTrafficSubscriber::requestStatics() {
+void TfTrafficSubscriber::requestStatics(const std::string& requester) {
   resend_request_t request;
   request.utime = toUtime(now());
-  request.requester = toolAuthority("lcmtf");
+  request.requester = requester;
   lcm_.publish(connection_.request_channel, &request);
 }
 

@@ -77,7 +77,7 @@ int runViewFrames(const ViewFramesOptions& options, lcm::LCM& lcm, std::ostream&
 
   TfTraffic traffic;
   TfTrafficSubscriber subscriber(lcm, options.connection, traffic);
-  subscriber.requestStatics();
+  subscriber.requestStatics(toolAuthority(kProgram));
   const TimePoint start = now();
   const auto deadline = std::chrono::steady_clock::now() + options.wait;
   while (!stop.load() && std::chrono::steady_clock::now() < deadline) {

@@ -21,9 +21,10 @@ constexpr TimePoint kStamp = lcmtf_test::kToolsEpoch;
 struct RequestCounter {
   void onRequest(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {
     resend_request_t request;
-    if (decodeMessage(buffer->data, buffer->data_size, request)) ++count;
+    if (decodeMessage(buffer->data, buffer->data_size, request))
+      requesters.push_back(request.requester);
   }
-  int count = 0;
+  std::vector<std::string> requesters;
 };
 
 void handleAll(lcm::LCM& lcm) {
@@ -81,12 +82,12 @@ TEST(TfTrafficSubscriber, ListensOnTheChannelsItIsGiven) {
   TransformBroadcaster(lcm, "TF", "robot").sendTransform({kStamp, "odom", "base", Transform()});
   TransformBroadcaster(lcm, "ROBOT_TF", "robot")
       .sendTransform({kStamp, "odom", "arm", Transform()});
-  subscriber.requestStatics();
+  subscriber.requestStatics("viewer");
   handleAll(lcm);
   const TrafficSummary summary = traffic.summarize(kStamp, now(), std::chrono::seconds(10));
   ASSERT_EQ(summary.edges.size(), 1u);
   EXPECT_EQ(summary.edges[0].child, "arm");
-  EXPECT_EQ(requests.count, 1);
+  EXPECT_THAT(requests.requesters, testing::ElementsAre("viewer"));
 }
 
 }  // namespace

@@ -28,8 +28,8 @@ class TfTrafficSubscriber {
   TfTrafficSubscriber(const TfTrafficSubscriber&) = delete;
   TfTrafficSubscriber& operator=(const TfTrafficSubscriber&) = delete;
 
-  /// Asks every static broadcaster to send its transforms again now.
-  void requestStatics();
+  /// Asks every static broadcaster to send its transforms again now, signed `requester`.
+  void requestStatics(const std::string& requester);
 
  private:
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel);
