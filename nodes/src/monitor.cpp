@@ -116,8 +116,8 @@ std::optional<int> parseMonitorCommandLine(const std::vector<std::string>& args,
   auto app = makeToolApp(kProgram, kDescription, kExamples);
   std::vector<std::string> frames;
   double duration_seconds = 5.0;
-  app->add_option("A B", frames, "Two frames: also report the chain between them")
-      ->type_name("FRAME")
+  app->add_option("frames", frames, "Two frames A B: also report the chain between them")
+      ->type_name("A B")
       ->check(nonEmptyName());
   app->add_option("--duration", duration_seconds,
                   "Seconds to listen before reporting (with --continuous: between reports, "

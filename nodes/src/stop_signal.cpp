@@ -19,6 +19,7 @@ void requestStop(int /*signal*/) { stop_requested.store(true); }
 const std::atomic<bool>& installStopSignalHandlers() {
   struct sigaction action {};
   action.sa_handler = requestStop;
+  action.sa_flags = SA_RESETHAND;  // a second Ctrl-C ends a program that is slow to stop
   sigemptyset(&action.sa_mask);
   for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal_number, &action, nullptr);
   return stop_requested;

@@ -116,8 +116,18 @@ void TfTraffic::record(const tf_message_t& batch, bool is_static, TimePoint rece
       edge = edges_.emplace(std::move(key), Edge{parent, child, is_static, {}}).first;
     }
     std::deque<Arrival>& arrivals = edge->second.arrivals;
+    if (arrivals.size() >= limits_.max_arrivals_per_edge) {
+      arrivals.pop_front();
+      --arrivals_;
+    }
+    if (arrivals_ >= limits_.max_arrivals) {
+      ++refused_;
+      noteProblem("arrivals", "transforms refused beyond " + std::to_string(limits_.max_arrivals) +
+                                  " held at once (first: '" + parent + "' -> '" + child + "')");
+      continue;
+    }
     arrivals.push_back(Arrival{received_utime, transform.utime, sender->second});
-    if (arrivals.size() > limits_.max_arrivals_per_edge) arrivals.pop_front();
+    ++arrivals_;
   }
 }
 
@@ -131,6 +141,7 @@ void TfTraffic::forgetBefore(TimePoint cutoff) {
   for (auto& [key, edge] : edges_) {
     while (!edge.arrivals.empty() && edge.arrivals.front().received < limit) {
       edge.arrivals.pop_front();
+      --arrivals_;
     }
   }
   for (Sender& sender : senders_) {

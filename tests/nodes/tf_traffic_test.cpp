@@ -206,6 +206,26 @@ TEST(TfTraffic, ArrivalsPerEdgeAreBoundedKeepingTheNewest) {
   EXPECT_EQ(base.newest_stamp, kStart + milliseconds(490));
 }
 
+TEST(TfTraffic, ArrivalsOverAllEdgesAreBoundedUntilForgotten) {
+  TrafficLimits limits;
+  limits.max_arrivals = 30;
+  TfTraffic traffic(limits);
+  stream(traffic, "robot", "odom", "base", 20, milliseconds(10), milliseconds(0));
+  stream(traffic, "robot", "base", "arm", 20, milliseconds(10), milliseconds(0));
+  TrafficSummary summary = traffic.summarize(kStart, kStart + std::chrono::seconds(1), kCache);
+  EXPECT_EQ(find(summary, "odom", "base").samples, 20u);
+  EXPECT_EQ(find(summary, "base", "arm").samples, 10u);
+  EXPECT_EQ(summary.refused, 10u);
+  EXPECT_THAT(summary.problems,
+              ElementsAre("transforms refused beyond 30 held at once (first: 'base' -> 'arm')"));
+  traffic.forgetBefore(kStart + milliseconds(100));
+  stream(traffic, "robot", "base", "arm", 10, milliseconds(10), milliseconds(0),
+         kStart + milliseconds(200));
+  summary = traffic.summarize(kStart, kStart + std::chrono::seconds(1), kCache);
+  EXPECT_EQ(find(summary, "base", "arm").samples, 10u);
+  EXPECT_EQ(summary.refused, 10u);
+}
+
 TEST(TfTraffic, SummaryCountsOnlyArrivalsInTheWindowAndForgetSlidesIt) {
   TfTraffic traffic;
   stream(traffic, "robot", "odom", "base", 200, milliseconds(10), milliseconds(0));

@@ -5,8 +5,8 @@
 
 namespace lcmtf::nodes {
 
-/// Set once SIGINT, SIGTERM or SIGHUP arrives, after installStopSignalHandlers(); long-running
-/// tools poll it and return normally, so destructors run and exit status is 0.
+/// Set by the first SIGINT, SIGTERM or SIGHUP (a second one ends the process); long-running
+/// tools poll it and return normally, so destructors run and the exit status is 0.
 const std::atomic<bool>& installStopSignalHandlers();
 
 /// Sleeps until `duration` has passed or `stop` is set; true when `stop` is set.

@@ -17,6 +17,7 @@ struct TrafficLimits {
   std::size_t max_edges = 10000;
   std::size_t max_authorities = 1000;
   std::size_t max_arrivals_per_edge = 200000;
+  std::size_t max_arrivals = 5000000;  ///< over all edges (about 120 MB)
 };
 
 /// One edge parent -> child as heard in a window.
@@ -112,6 +113,7 @@ class TfTraffic {
   TrafficLimits limits_;
   std::map<std::tuple<std::string, std::string, bool>, Edge> edges_;  // (child, parent, static)
   std::vector<Sender> senders_;
+  std::size_t arrivals_ = 0;  // over all edges
   std::map<std::string, std::uint32_t> sender_ids_;
   std::uint64_t messages_ = 0;
   std::uint64_t malformed_ = 0;
