@@ -5,8 +5,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <regex>
 #include <sstream>
+#include <thread>
+
+#include <lcm/lcm-cpp.hpp>
 
 #include "lcmtf/buffer.hpp"
 #include "lcmtf/transform_listener.hpp"
@@ -275,6 +279,48 @@ TEST(MonitorProcess, ContinuousModeReportsEachWindowUntilStopped) {
   ASSERT_EQ(row.size(), 7u) << out;
   EXPECT_NEAR(std::stod(row[3]), 50.0, 10.0) << out;
   EXPECT_THAT(last_full_report, HasSubstr("in the 0.4"));
+}
+
+TEST(MonitorProcess, HostileInputIsCountedAndDescribedWhileGoodTrafficIsReported) {
+  const std::string url = testUrl();
+  auto odom = publisher(url, "odometry", 50, "odom", "base");
+  ToolProcess monitor(LCMTF_MONITOR_PATH, {"--lcm-url", url, "--duration", "1.5"});
+  ToolProcess echo(LCMTF_ECHO_PATH, {"--lcm-url", url, "--rate", "20", "odom", "base"});
+  ASSERT_TRUE(echo.waitForStdout("'base' in 'odom'", 5s)) << echo.stderrText();
+
+  lcm::LCM lcm(url);
+  const std::uint8_t garbage[] = {0xde, 0xad, 0xbe, 0xef, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+  tf_message_t nan_batch{};
+  nan_batch.authority = "broken-driver";
+  nan_batch.transforms.push_back({});
+  nan_batch.transforms[0].utime = toUtime(now());
+  nan_batch.transforms[0].parent_frame = "odom";
+  nan_batch.transforms[0].child_frame = "wheel";
+  nan_batch.transforms[0].translation.x = std::numeric_limits<double>::quiet_NaN();
+  nan_batch.transforms[0].rotation.w = 1.0;
+  nan_batch.num_transforms = 1;
+  for (int i = 0; i < 5; ++i) {
+    lcm.publish("TF", garbage, sizeof garbage);
+    lcm.publish("TF", &nan_batch);
+    std::this_thread::sleep_for(20ms);
+  }
+  ASSERT_EQ(monitor.waitForExit(15s), std::optional<int>(0)) << monitor.stderrText();
+  const std::string report = monitor.stdoutText();
+  EXPECT_THAT(report,
+              HasSubstr("Problems since start (5 malformed messages, 5 invalid transforms"));
+  EXPECT_THAT(report, HasSubstr("non-finite value in 'odom' -> 'wheel' from 'broken-driver'"));
+  EXPECT_EQ(frameRow(report, "base", "odom").size(), 7u) << report;
+  EXPECT_TRUE(frameRow(report, "wheel", "odom").empty()) << report;
+
+  EXPECT_TRUE(echo.waitForStderr("lcmtf-echo: ignored a malformed message on TF", 5s))
+      << echo.stderrText();
+  EXPECT_FALSE(echo.waitForExit(0ms)) << "echo keeps running";
+  const std::size_t printed = echo.stdoutText().size();
+  const auto deadline = std::chrono::steady_clock::now() + 5s;
+  while (echo.stdoutText().size() == printed && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(10ms);
+  }
+  EXPECT_GT(echo.stdoutText().size(), printed) << "echo goes on printing poses";
 }
 
 TEST(ViewFramesProcess, WritesTheTreeAsDotAndDrawsItWhenGraphvizIsThere) {
