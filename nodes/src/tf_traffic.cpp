@@ -246,7 +246,13 @@ std::vector<FrameConflict> TfTraffic::findConflicts(const WindowTally& tally) co
   for (const auto& [child, senders] : tally.senders_by_child) {
     if (senders.size() < 2) continue;
     FrameConflict conflict{child, {}};
-    for (const auto& [id, sender] : senders) {
+    std::vector<std::pair<std::uint32_t, const WindowTally::SenderOfFrame*>> heard_most_first;
+    for (const auto& [id, sender] : senders) heard_most_first.emplace_back(id, &sender);
+    std::stable_sort(
+        heard_most_first.begin(), heard_most_first.end(),
+        [](const auto& a, const auto& b) { return a.second->transforms > b.second->transforms; });
+    for (const auto& [id, sender_of_frame] : heard_most_first) {
+      const WindowTally::SenderOfFrame& sender = *sender_of_frame;
       std::string parents;
       for (const std::string& parent : sender.parents) {
         parents += (parents.empty() ? "'" : ", '") + parent + "'";

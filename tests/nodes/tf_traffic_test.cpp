@@ -110,8 +110,8 @@ TEST(TfTraffic, StaticEdgesAreMarkedAndHaveNoDelay) {
 
 TEST(TfTraffic, TwoAuthoritiesSendingOneFrameAreAConflict) {
   TfTraffic traffic;
+  stream(traffic, "beta", "map", "base", 5, milliseconds(50), milliseconds(1));  // heard first
   stream(traffic, "alpha", "odom", "base", 30, milliseconds(10), milliseconds(1));
-  stream(traffic, "beta", "map", "base", 5, milliseconds(50), milliseconds(1));
   stream(traffic, "alpha", "base", "arm", 5, milliseconds(50), milliseconds(1));
   const TrafficSummary summary =
       traffic.summarize(kStart, kStart + std::chrono::seconds(1), kCache);

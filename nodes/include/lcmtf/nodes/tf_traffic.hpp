@@ -49,7 +49,8 @@ struct AuthorityTraffic {
 /// A child frame sent by more than one authority in the window: one line per sender.
 struct FrameConflict {
   std::string child;
-  std::vector<std::string> senders;  ///< "'alpha' (parent 'odom', dynamic, 120 transforms)"
+  std::vector<std::string> senders;  ///< "'alpha' (parent 'odom', dynamic, 120 transforms)",
+                                     ///< the sender heard most first
 };
 
 /// What was heard between `window_start` and `window_end`; the counts run from the start.
