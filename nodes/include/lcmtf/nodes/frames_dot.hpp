@@ -6,9 +6,8 @@
 
 namespace lcmtf::nodes {
 
-/// The frames heard as a Graphviz digraph, `caption` under it. Each edge parent -> child says
-/// who broadcast it, its average rate, its newest stamp and age, and the history a buffer
-/// holds; static edges are dashed, frames sent by two authorities drawn red.
+/// The frames heard as a Graphviz digraph captioned `caption`: edges labelled with broadcaster,
+/// rate, newest stamp and age, buffer span; static edges dashed, conflicted frames red.
 std::string framesToDot(const TrafficSummary& summary, const std::string& caption);
 
 /// `text` as a quoted DOT string that Graphviz shows as it is; control characters and

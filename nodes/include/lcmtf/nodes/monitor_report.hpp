@@ -7,9 +7,8 @@
 
 namespace lcmtf::nodes {
 
-/// lcmtf-monitor's report: what was heard from `source` ("TF and TF_STATIC at URL"), the
-/// chain and its net delay when `chain` is given, then frames (as a tree), authorities,
-/// conflicts and problems. Rates in Hz, delays in milliseconds.
+/// lcmtf-monitor's report on what `source` carried: the chain (when given) and its net delay,
+/// frames as a tree, authorities, conflicts, problems. Rates in Hz, delays in milliseconds.
 std::string formatMonitorReport(const TrafficSummary& summary, const std::string& source,
                                 const ChainReport* chain);
 
