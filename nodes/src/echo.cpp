@@ -79,15 +79,18 @@ class EchoLoop {
         next_tick = now_steady + period;
         continue;
       }
+      const bool timed_out =
+          options_.timeout && !printed && now_steady - start >= *options_.timeout;
+      if (!tick && !timed_out) continue;
       std::string missing =
           describeMissing(buffer_, options_.reference_frame, options_.frame, time, heardAnything());
       if (!heardAnything()) missing += " on " + channels();
-      if (options_.timeout && !printed && now_steady - start >= *options_.timeout) {
+      if (timed_out) {
         err_ << kProgram << ": gave up after " << toString(*options_.timeout) << ": " << missing
              << std::endl;
         return kExitFailure;
       }
-      if (tick) err_ << "Waiting: " << missing << std::endl;
+      err_ << "Waiting: " << missing << std::endl;
     }
     return kExitSuccess;
   }
