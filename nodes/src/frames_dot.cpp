@@ -22,7 +22,8 @@ std::string edgeLabel(const EdgeTraffic& edge, TimePoint heard_until) {
   label += (several ? "broadcasters: " : "broadcaster: ") + joined(edge.authorities) + "\n";
   if (several) label += "CONFLICT: more than one broadcaster\n";
   if (edge.is_static) return label + "heard " + std::to_string(edge.samples) + " times";
-  label += "average rate: " + fixedDecimals(edge.rate_hz, 2) + " Hz\n";
+  label += edge.samples < 2 ? std::string("average rate: - (heard once)\n")
+                            : "average rate: " + fixedDecimals(edge.rate_hz, 2) + " Hz\n";
   label += "most recent: " + toString(edge.newest_stamp) + " (" +
            fixedDecimals(toSeconds(heard_until - edge.newest_stamp), 3) + " s old)\n";
   label += "buffer: " + fixedDecimals(toSeconds(edge.newest_stamp - edge.oldest_stamp), 3) +

@@ -55,6 +55,13 @@ TEST(FramesDot, EachEdgeIsLabelledWithBroadcasterRateNewestStampAndBuffer) {
   EXPECT_THAT(dot, HasSubstr("label=\"caption\""));
 }
 
+TEST(FramesDot, AnEdgeHeardOnceHasNoRate) {
+  EdgeTraffic once = dynamicEdge("odom", "base", {"driver"});
+  once.samples = 1;
+  once.rate_hz = 0.0;
+  EXPECT_THAT(framesToDot(summaryOf({once}), ""), HasSubstr("\\naverage rate: - (heard once)\\n"));
+}
+
 TEST(FramesDot, StaticEdgesAreDashedAndSaySo) {
   EdgeTraffic camera;
   camera.parent = "base";
