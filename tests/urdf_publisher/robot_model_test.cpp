@@ -224,9 +224,17 @@ TEST(RobotModel, LinksInALoopAwayFromTheRootAreRefused) {
       "<robot name='r'><link name='a'/><link name='b'/><link name='c'/>"
       "<joint name='j' type='fixed'><parent link='b'/><child link='c'/></joint>"
       "<joint name='k' type='fixed'><parent link='c'/><child link='b'/></joint></robot>";
+  EXPECT_EQ(refusal(urdf), "test.urdf: joints 'j' (b -> c), 'k' (c -> b) form a loop");
+}
+
+TEST(RobotModel, LoopOfJointsWithoutARootIsRefusedNamingThem) {
+  const std::string urdf =
+      "<robot name='r'><link name='a'/><link name='b'/><link name='c'/>"
+      "<joint name='ab' type='fixed'><parent link='a'/><child link='b'/></joint>"
+      "<joint name='bc' type='continuous'><parent link='b'/><child link='c'/></joint>"
+      "<joint name='ca' type='fixed'><parent link='c'/><child link='a'/></joint></robot>";
   EXPECT_EQ(refusal(urdf),
-            "test.urdf: links 'b', 'c' are not connected to the root link 'a' (their joints form "
-            "a loop)");
+            "test.urdf: joints 'ab' (a -> b), 'bc' (b -> c), 'ca' (c -> a) form a loop");
 }
 
 TEST(RobotModel, EmptyJointNameIsRefused) {

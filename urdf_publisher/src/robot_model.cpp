@@ -4,8 +4,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <map>
-#include <set>
 
 #include "format_number.hpp"
 #include "mimic_chains.hpp"
@@ -29,7 +27,6 @@ class ModelBuilder {
     robot_.root_link = urdf_.getRoot()->name;
     checkNames();
     walkTreeFromRoot();
-    checkEveryLinkReached();
   }
 
  private:
@@ -65,17 +62,6 @@ class ModelBuilder {
         pending.push_back(child->get());
       }
     }
-  }
-
-  void checkEveryLinkReached() {
-    if (robot_.links.size() == urdf_.links_.size()) return;
-    const std::set<std::string> reached(robot_.links.begin(), robot_.links.end());
-    std::string unreached;
-    for (const auto& [name, link] : urdf_.links_) {
-      if (!reached.count(name)) unreached += (unreached.empty() ? "'" : ", '") + name + "'";
-    }
-    fail("links " + unreached + " are not connected to the root link '" + robot_.root_link +
-         "' (their joints form a loop)");
   }
 
   Transform origin(const ::urdf::Joint& joint) const {

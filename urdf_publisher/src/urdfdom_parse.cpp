@@ -6,6 +6,7 @@
 #include <mutex>
 #include <vector>
 
+#include "joint_loops.hpp"
 #include "lcmtf_urdf/robot_model.hpp"
 
 namespace lcmtf::urdf {
@@ -34,6 +35,7 @@ std::mutex& consoleBridgeMutex() {
   if (urdf.find_first_not_of(" \t\r\n") == std::string::npos) {
     throw UrdfError(source + ": the robot description is empty");
   }
+  refuseJointLoops(urdf, source);
   CollectedErrors collected;
   ::urdf::ModelInterfaceSharedPtr model;
   std::string exception;
