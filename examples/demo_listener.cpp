@@ -1,6 +1,7 @@
 // The listening end of the demo: prints, a few times a second, where the gripper is in the
 // base frame and where an object the camera saw two seconds ago is now.
 // usage: lcmtf_demo_listener [--lcm-url URL] [--duration S] [--rate HZ] [--help]
+#include <cmath>
 #include <csignal>
 #include <iostream>
 #include <thread>
@@ -13,6 +14,15 @@
 namespace {
 
 volatile std::sig_atomic_t stop_requested = 0;
+
+// CLI::Range lets NaN through; every number here must be finite.
+const CLI::Validator kFinite(
+    [](std::string& text) -> std::string {
+      double value = 0.0;
+      const bool finite = CLI::detail::lexical_cast(text, value) && std::isfinite(value);
+      return finite ? std::string() : "'" + text + "' is not a finite number";
+    },
+    "FINITE");
 
 extern "C" void requestStop(int /*signal*/) { stop_requested = 1; }
 
@@ -32,11 +42,13 @@ int main(int argc, char** argv) {
       "lcmtf_demo_listener");
   app.add_option("--lcm-url", lcm_url, "LCM URL (default: LCM's, which stays on this host)");
   app.add_option("--duration", duration, "Seconds to run; 0 runs until Ctrl-C")
-      ->check(CLI::Range(0.0, 1e9));
-  app.add_option("--rate", rate, "Reports per second")->check(CLI::Range(0.1, 100.0));
+      ->check(kFinite & CLI::Range(0.0, 1e9));
+  app.add_option("--rate", rate, "Reports per second")->check(kFinite & CLI::Range(0.1, 100.0));
   app.add_option("--look-back", look_back, "Seconds since the camera saw the object")
-      ->check(CLI::Range(0.0, 9.0));
-  app.add_option("--object", object, "Where the camera saw the object, in its frame")->expected(3);
+      ->check(kFinite & CLI::Range(0.0, 9.0));
+  app.add_option("--object", object, "Where the camera saw the object, in its frame")
+      ->expected(3)
+      ->check(kFinite);
   app.add_option("--base", frames.base)->capture_default_str();
   app.add_option("--end-effector", frames.end_effector)->capture_default_str();
   app.add_option("--camera", frames.camera)->capture_default_str();

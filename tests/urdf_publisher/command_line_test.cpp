@@ -251,6 +251,15 @@ TEST(JointPublisherRun, PublishesAtItsRateForItsDuration) {
   EXPECT_LE(published, 31);
 }
 
+TEST(JointPublisherRun, ADurationShorterThanThePeriodEndsOnTime) {
+  const auto start = std::chrono::steady_clock::now();
+  const ProgramRun run = runJointPublisherWith(
+      {"--lcm-url", "memq://", "--rate", "0.2", "--duration", "0.2", EXAMPLE_URDF});
+  EXPECT_LT(std::chrono::steady_clock::now() - start, 2s);
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("stopped after 1 joint states"));
+}
+
 TEST(JointPublisherRun, HoldingAnUnknownJointExitsOneNamingIt) {
   const ProgramRun run = runJointPublisherWith(
       {"--lcm-url", "memq://", "--position", "knee=0.1", "--duration", "5", EXAMPLE_URDF});

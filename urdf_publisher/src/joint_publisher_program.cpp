@@ -1,5 +1,6 @@
 #include "lcmtf_urdf/joint_publisher_program.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <stdexcept>
 #include <thread>
@@ -128,7 +129,7 @@ int runJointPublisher(const JointPublisherConfig& config, const std::atomic<bool
     next += period;
     const auto now_steady = std::chrono::steady_clock::now();
     if (next + period < now_steady) next = now_steady;  // fell behind: keep the rate, not the count
-    napUntil(next, stop);
+    napUntil(config.duration > 0.0 ? std::min(next, end) : next, stop);
   }
   output.say("stopped after " + std::to_string(published) + " joint states" +
              (failed != 0 ? ", " + std::to_string(failed) + " failed to publish" : ""));

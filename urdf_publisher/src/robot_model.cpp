@@ -34,18 +34,12 @@ class ModelBuilder {
     throw UrdfError(robot_.source + ": " + problem);
   }
 
-  void checkNames() {
-    std::map<std::string, std::string> parent_joint_of;
+  void checkNames() const {
     for (const auto& [name, link] : urdf_.links_) {
       if (name.empty()) fail("a link has an empty name");
     }
     for (const auto& [name, joint] : urdf_.joints_) {
       if (name.empty()) fail("a joint has an empty name");
-      const auto [other, inserted] = parent_joint_of.emplace(joint->child_link_name, name);
-      if (!inserted) {
-        fail("link '" + joint->child_link_name + "' is the child of two joints, '" + other->second +
-             "' and '" + name + "'");
-      }
     }
   }
 

@@ -25,11 +25,12 @@ UrdfPublisher::UrdfPublisher(lcm::LCM& lcm, RobotModel robot, UrdfPublisherOptio
       options_(std::move(options)),
       processor_(robot_, options_.joint_states),
       statics_(lcm_, staticOptions(options_)) {
-  joint_states_ = lcm_.subscribe(options_.joint_states_channel, &UrdfPublisher::onJointState, this);
-  joint_states_->setQueueCapacity(options_.queue_capacity);
+  joint_state_subscription_ =
+      lcm_.subscribe(options_.joint_states_channel, &UrdfPublisher::onJointState, this);
+  joint_state_subscription_->setQueueCapacity(options_.queue_capacity);
   if (options_.publish_description) {
-    description_requests_subscription_ = lcm_.subscribe(options_.description_request_channel,
-                                                        &UrdfPublisher::onDescriptionRequest, this);
+    description_request_subscription_ = lcm_.subscribe(options_.description_request_channel,
+                                                       &UrdfPublisher::onDescriptionRequest, this);
     publishDescription();
   }
   const std::vector<TransformStamped> fixed =
@@ -38,8 +39,8 @@ UrdfPublisher::UrdfPublisher(lcm::LCM& lcm, RobotModel robot, UrdfPublisherOptio
 }
 
 UrdfPublisher::~UrdfPublisher() {
-  lcm_.unsubscribe(joint_states_);
-  if (description_requests_subscription_) lcm_.unsubscribe(description_requests_subscription_);
+  lcm_.unsubscribe(joint_state_subscription_);
+  if (description_request_subscription_) lcm_.unsubscribe(description_request_subscription_);
 }
 
 void UrdfPublisher::poll() { statics_.resendIfDue(); }
@@ -53,7 +54,7 @@ void UrdfPublisher::onDescriptionRequest(const lcm::ReceiveBuffer* buffer,
                                          const std::string& /*channel*/) {
   resend_request_t request;
   if (!decodeMessage(buffer->data, buffer->data_size, request).ok) return;
-  ++description_requests_;
+  ++description_requests_answered_;
   publishDescription();
 }
 

@@ -45,9 +45,8 @@ struct JointStateStatistics {
 /// One line: what was handled and, when there were any, what was refused and why.
 std::string describe(const JointStateStatistics& statistics);
 
-/// Turns each joint state into one batch of parent_T_child transforms: every movable joint
-/// it names, and the mimic joints that follow them. Bad entries are skipped, bad messages
-/// refused; each is counted and its first occurrence reported. Not thread-safe.
+/// Each joint state as one batch of parent_T_child: its movable joints and their mimic joints.
+/// Bad entries are skipped, bad messages refused, each counted and first reported. One thread.
 class JointStateProcessor {
  public:
   explicit JointStateProcessor(const RobotModel& robot, JointStateOptions options = {});
@@ -60,7 +59,9 @@ class JointStateProcessor {
   const tf_message_t* process(const void* data, std::size_t size, TimePoint arrival = now());
   const tf_message_t* process(const joint_state_t& state, TimePoint arrival = now());
 
+  /// What has been handled and refused so far.
   const JointStateStatistics& statistics() const;
+  /// The options it was made with.
   const JointStateOptions& options() const;
 
  private:

@@ -6,9 +6,8 @@
 
 namespace lcmtf::urdf {
 
-/// Lines saying what will be published for `robot` (frames named with `frame_prefix`), and
-/// for each floating or planar joint that it is not, and how to publish it instead.
-/// `list_joints` adds one line per joint with its type, frames, axis and limits.
+/// What will be published for `robot`, why floating and planar joints are not and how to publish
+/// them instead; `list_joints` adds a line per joint (type, frames, axis, limits, mimic).
 std::string describeRobot(const RobotModel& robot, const std::string& frame_prefix,
                           bool list_joints = false);
 

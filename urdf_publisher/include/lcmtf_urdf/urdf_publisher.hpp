@@ -28,9 +28,8 @@ struct UrdfPublisherOptions {
   int queue_capacity = 1000;  ///< joint states LCM holds while the publisher is busy
 };
 
-/// robot_state_publisher on LCM: the fixed joints once as static transforms, each joint state
-/// as one batch on the TF channel, and the URDF text on the description channel at start and
-/// whenever it is asked for. Driven by the handle loop of the LCM it is given.
+/// robot_state_publisher on LCM: fixed joints as statics, each joint state as one TF batch, the
+/// URDF text at start and on request. Driven by the handle loop of the LCM it is given.
 class UrdfPublisher {
  public:
   /// Subscribes on `lcm` (which must outlive it) and publishes the statics and description.
@@ -42,10 +41,14 @@ class UrdfPublisher {
   /// Resends the static transforms when their period is up; call between handle() calls.
   void poll();
 
+  /// The robot it publishes.
   const RobotModel& robot() const { return robot_; }
+  /// The joint states handled and refused so far.
   const JointStateStatistics& statistics() const { return processor_.statistics(); }
+  /// Publications LCM refused (batches, statics, descriptions).
   std::uint64_t publishFailures() const { return publish_failures_; }
-  std::uint64_t descriptionRequestsAnswered() const { return description_requests_; }
+  /// Requests for the URDF text answered.
+  std::uint64_t descriptionRequestsAnswered() const { return description_requests_answered_; }
 
  private:
   void onJointState(const lcm::ReceiveBuffer* buffer, const std::string& channel);
@@ -57,10 +60,10 @@ class UrdfPublisher {
   UrdfPublisherOptions options_;
   JointStateProcessor processor_;
   StaticTransformBroadcaster statics_;
-  lcm::Subscription* joint_states_ = nullptr;
-  lcm::Subscription* description_requests_subscription_ = nullptr;
+  lcm::Subscription* joint_state_subscription_ = nullptr;
+  lcm::Subscription* description_request_subscription_ = nullptr;
   std::uint64_t publish_failures_ = 0;
-  std::uint64_t description_requests_ = 0;
+  std::uint64_t description_requests_answered_ = 0;
 };
 
 }  // namespace lcmtf::urdf
