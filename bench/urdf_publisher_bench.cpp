@@ -9,7 +9,8 @@
 // 2. End to end over udpm on this host: this program publishes joint states of the G1, the
 //    real lcmtf-urdf-publisher turns them into transforms, and a TransformListener here
 //    reports the moment the root-to-deepest-link lookup at the state's stamp succeeds; next to
-//    two raw LCM hops of the same joint states through a relay process.
+//    two raw LCM hops of the same joint states through a relay process, the two paths taking
+//    turns (--rate joint states per second each, default 500, the G1's own rate).
 #include <benchmark/benchmark.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -61,7 +62,7 @@ struct Options {
   double seconds = 5.0;
   double fill_seconds =
       std::chrono::duration<double>(lcmtf::BufferCore::kDefaultCacheTime).count() + 1.0;
-  double rate_hz = 1000.0;
+  double rate_hz = 500.0;  ///< joint states per second on each path
   int port = 0;
   std::string role = "sender";
   std::string url;
@@ -224,58 +225,48 @@ double percentile(const std::vector<double>& sorted, double p) {
   return sorted[std::clamp<std::size_t>(rank, 1, sorted.size()) - 1];
 }
 
-// Publishes `count` joint states at the rate, state k stamped base + k * period, on `channel`.
-void publishStates(lcm::LCM& lcm, const char* channel, const Workload& workload, int count,
-                   double rate_hz, std::int64_t base_utime, Latencies& latencies) {
-  const auto period = std::chrono::duration<double>(1.0 / rate_hz);
-  const auto start = Clock::now() + std::chrono::milliseconds(50);
-  for (int k = 0; k < count; ++k) {
-    std::this_thread::sleep_until(start + std::chrono::duration_cast<Clock::duration>(period * k));
-    lcmtf::joint_state_t state = workload.states[static_cast<std::size_t>(k % kDistinctStates)];
-    state.utime = base_utime + k * std::llround(1e6 / rate_hz);
-    latencies.sent(k);
-    lcm.publish(channel, &state);
-  }
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
-}
-
 // The joint state's index from its stamp, or -1.
-int indexOf(std::int64_t utime, std::int64_t base_utime, double rate_hz, int count) {
-  const std::int64_t period = std::llround(1e6 / rate_hz);
+int indexOf(std::int64_t utime, std::int64_t base_utime, std::int64_t period_us, int count) {
   const std::int64_t offset = utime - base_utime;
-  if (offset < 0 || offset % period != 0 || offset / period >= count) return -1;
-  return static_cast<int>(offset / period);
+  if (offset < 0 || offset % period_us != 0 || offset / period_us >= count) return -1;
+  return static_cast<int>(offset / period_us);
 }
 
-struct RawEcho {
+// The raw path's end: joint states back from the relay, on an LCM and thread of their own.
+class RawEcho {
+ public:
+  RawEcho(const std::string& url, Latencies& latencies, std::int64_t base_utime,
+          std::int64_t period_us, int count)
+      : lcm_(url),
+        latencies_(latencies),
+        base_utime_(base_utime),
+        period_us_(period_us),
+        count_(count) {
+    lcm_.subscribe(kRawOut, &RawEcho::onMessage, this)->setQueueCapacity(1000);
+    thread_ = std::thread([this] {
+      while (!stopping_) lcm_.handleTimeout(50);
+    });
+  }
+  ~RawEcho() {
+    stopping_ = true;
+    thread_.join();
+  }
+
+ private:
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {
     lcmtf::joint_state_t state;
     if (!lcmtf::decodeMessage(buffer->data, buffer->data_size, state).ok) return;
-    latencies->seen(indexOf(state.utime, base_utime, rate_hz, count));
+    latencies_.seen(indexOf(state.utime, base_utime_, period_us_, count_));
   }
-  Latencies* latencies = nullptr;
-  std::int64_t base_utime = 0;
-  double rate_hz = 0;
-  int count = 0;
-};
 
-std::vector<double> runRawPhase(const Options& options, const Workload& workload, int warmup,
-                                int count) {
-  Child relay({thisProgram(), "--role", "relay", "--url", options.url});
-  lcm::LCM lcm(options.url);
-  Latencies latencies(count);
-  RawEcho echo{&latencies, lcmtf::toUtime(lcmtf::now()), options.rate_hz, count};
-  lcm.subscribe(kRawOut, &RawEcho::onMessage, &echo)->setQueueCapacity(1000);
-  std::atomic<bool> stopping{false};
-  std::thread handler([&] {
-    while (!stopping) lcm.handleTimeout(50);
-  });
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the relay subscribes
-  publishStates(lcm, kRawIn, workload, count, options.rate_hz, echo.base_utime, latencies);
-  stopping = true;
-  handler.join();
-  return latencies.sortedFrom(warmup);
-}
+  lcm::LCM lcm_;
+  Latencies& latencies_;
+  std::int64_t base_utime_;
+  std::int64_t period_us_;
+  int count_;
+  std::atomic<bool> stopping_{false};
+  std::thread thread_;
+};
 
 // The first link reached by the longest chain of joints from the root.
 std::string deepestLink(const RobotModel& robot) {
@@ -295,33 +286,39 @@ std::string deepestLink(const RobotModel& robot) {
   return deepest;
 }
 
-struct TfFigures {
-  std::vector<double> latencies_us;
+struct EndToEndFigures {
+  std::vector<double> raw_us;
+  std::vector<double> lcmtf_us;
   double publisher_cpu_percent = NAN;
-  std::uint64_t received_batches = 0;
 };
 
-TfFigures runTfPhase(const Options& options, const Workload& workload, int measured_from,
-                     int count) {
+// Both paths at once, their joint states taking turns half a period apart, so that whatever
+// else the machine does in the meantime weighs on both alike.
+EndToEndFigures measureEndToEnd(const Options& options, const Workload& workload, int measured_from,
+                                int count) {
   const std::string root = workload.robot.root_link;
   const std::string deepest = deepestLink(workload.robot);
+  Child relay({thisProgram(), "--role", "relay", "--url", options.url});
   Child publisher({URDF_PUBLISHER_PROGRAM, "--lcm-url", options.url, g1Path()});
   lcm::LCM lcm(options.url);
+  const std::int64_t period_us = std::llround(1e6 / options.rate_hz);
+  const std::int64_t raw_base = lcmtf::toUtime(lcmtf::now());
+  const std::int64_t lcmtf_base = raw_base + period_us / 2;
   // Declared before the buffer, so they outlive any callback it could still make.
-  Latencies latencies(count);
+  Latencies raw(count);
+  Latencies via_lcmtf(count);
   std::function<void(int)> arm;
+  RawEcho echo(options.url, raw, raw_base, period_us, count);
   lcmtf::Buffer buffer;
   lcmtf::ListenerOptions listening;
   listening.lcm_url = options.url;
   lcmtf::TransformListener listener(buffer, listening);
-  if (!buffer.canTransform(workload.robot.fixed_joints.front().parent_link,
-                           workload.robot.fixed_joints.front().child_link, lcmtf::kLatestTime,
+  const auto& fixed = workload.robot.fixed_joints.front();
+  if (!buffer.canTransform(fixed.parent_link, fixed.child_link, lcmtf::kLatestTime,
                            std::chrono::seconds(10))) {
     throw std::runtime_error("lcmtf-urdf-publisher sent no static transforms");
   }
 
-  const std::int64_t base_utime = lcmtf::toUtime(lcmtf::now());
-  const std::int64_t period_us = std::llround(1e6 / options.rate_hz);
   // One request pending at a time: the callback runs within the insert that makes the lookup
   // possible, and arms the request for the next state.
   arm = [&](int k) {
@@ -329,32 +326,42 @@ TfFigures runTfPhase(const Options& options, const Workload& workload, int measu
       const auto handle = buffer.addTransformableRequest(
           [&, k](lcmtf::TransformableRequestHandle, const std::string&, const std::string&,
                  lcmtf::TimePoint, lcmtf::TransformableResult result) {
-            if (result == lcmtf::TransformableResult::kAvailable) latencies.seen(k);
+            if (result == lcmtf::TransformableResult::kAvailable) via_lcmtf.seen(k);
             arm(k + 1);
           },
-          root, deepest, lcmtf::fromUtime(base_utime + k * period_us));
+          root, deepest, lcmtf::fromUtime(lcmtf_base + k * period_us));
       if (handle != 0) return;
-      latencies.seen(k);
+      via_lcmtf.seen(k);
     }
   };
   arm(0);
 
-  TfFigures figures;
-  std::thread measuring([&] {
-    const double seconds_before = std::max(0.0, measured_from / options.rate_hz);
-    std::this_thread::sleep_for(std::chrono::duration<double>(seconds_before + 0.05));
-    const double cpu_before = publisher.cpuSeconds();
-    const auto wall_before = Clock::now();
-    std::this_thread::sleep_for(std::chrono::duration<double>(options.seconds));
-    figures.publisher_cpu_percent =
-        100.0 * (publisher.cpuSeconds() - cpu_before) /
-        std::chrono::duration<double>(Clock::now() - wall_before).count();
-  });
-  publishStates(lcm, lcmtf::kJointStatesChannel, workload, count, options.rate_hz, base_utime,
-                latencies);
-  measuring.join();
-  figures.latencies_us = latencies.sortedFrom(measured_from);
-  figures.received_batches = listener.statistics().messages;
+  EndToEndFigures figures;
+  const auto half = std::chrono::microseconds(period_us / 2);
+  const auto start = Clock::now() + std::chrono::milliseconds(50);
+  double cpu_before = NAN;
+  Clock::time_point wall_before;
+  for (int k = 0; k < count; ++k) {
+    if (k == measured_from) {
+      cpu_before = publisher.cpuSeconds();
+      wall_before = Clock::now();
+    }
+    lcmtf::joint_state_t state = workload.states[static_cast<std::size_t>(k % kDistinctStates)];
+    const auto due = start + std::chrono::microseconds(k * period_us);
+    std::this_thread::sleep_until(due);
+    state.utime = raw_base + k * period_us;
+    raw.sent(k);
+    lcm.publish(kRawIn, &state);
+    std::this_thread::sleep_until(due + half);
+    state.utime = lcmtf_base + k * period_us;
+    via_lcmtf.sent(k);
+    lcm.publish(lcmtf::kJointStatesChannel, &state);
+  }
+  figures.publisher_cpu_percent = 100.0 * (publisher.cpuSeconds() - cpu_before) /
+                                  std::chrono::duration<double>(Clock::now() - wall_before).count();
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  figures.raw_us = raw.sortedFrom(measured_from);
+  figures.lcmtf_us = via_lcmtf.sortedFrom(measured_from);
   return figures;
 }
 
@@ -364,29 +371,28 @@ void printRow(const char* name, const std::vector<double>& l) {
 }
 
 void runEndToEnd(const Options& options, const Workload& g1) {
-  const int warmup = static_cast<int>(std::lround(0.5 * options.rate_hz));
+  const int warmup = static_cast<int>(std::lround((0.5 + options.fill_seconds) * options.rate_hz));
   const int measured = static_cast<int>(std::lround(options.seconds * options.rate_hz));
-  const std::vector<double> raw = runRawPhase(options, g1, warmup, warmup + measured);
-  const int fill = static_cast<int>(std::lround(options.fill_seconds * options.rate_hz));
-  const TfFigures tf = runTfPhase(options, g1, warmup + fill, warmup + fill + measured);
+  const EndToEndFigures figures = measureEndToEnd(options, g1, warmup, warmup + measured);
 
-  std::printf("\nend to end over %s, G1 joint states at %.0f Hz, %.1f s measured\n",
-              options.url.c_str(), options.rate_hz, options.seconds);
-  std::printf("raw:  joint state -> relay process -> back here (two LCM hops), at the callback\n");
+  std::printf("\nend to end over %s: G1 joint states at %.0f Hz on each path, taking turns;\n",
+              options.url.c_str(), options.rate_hz);
+  std::printf("%.1f s measured after %.1f s in which the listener's buffer fills its history\n",
+              options.seconds, 0.5 + options.fill_seconds);
+  std::printf("raw:   joint state -> relay process -> back here (two LCM hops), at the callback\n");
   std::printf("lcmtf: joint state -> lcmtf-urdf-publisher -> TransformListener here, when\n");
-  std::printf("       %s -> %s at the state's stamp can be looked up; after %.1f s\n",
-              g1.robot.root_link.c_str(), deepestLink(g1.robot).c_str(), options.fill_seconds);
-  std::printf("       in which the listener's buffer fills its history\n\n");
+  std::printf("       %s -> %s at the state's stamp can be looked up\n\n",
+              g1.robot.root_link.c_str(), deepestLink(g1.robot).c_str());
   std::printf("%-40s %6s %8s %8s %8s %8s\n", "latency (us)", "n", "p50", "p90", "p99", "max");
-  printRow("two raw LCM hops", raw);
-  printRow("joint state -> lookup", tf.latencies_us);
-  const double ratio = percentile(tf.latencies_us, 99) / percentile(raw, 99);
+  printRow("two raw LCM hops", figures.raw_us);
+  printRow("joint state -> lookup", figures.lcmtf_us);
+  const double ratio = percentile(figures.lcmtf_us, 99) / percentile(figures.raw_us, 99);
   std::printf("\np99 lcmtf / p99 two raw hops: %.2fx (target <= %.0fx): %s\n", ratio, kTargetRatio,
               ratio <= kTargetRatio ? "met" : "MISSED");
   std::printf("lcmtf-urdf-publisher CPU while measured: %.1f %% of one core\n",
-              tf.publisher_cpu_percent);
-  std::printf("lost: raw %zu of %d, lcmtf %zu of %d\n", measured - raw.size(), measured,
-              measured - tf.latencies_us.size(), measured);
+              figures.publisher_cpu_percent);
+  std::printf("lost: raw %zu of %d, lcmtf %zu of %d\n", measured - figures.raw_us.size(), measured,
+              measured - figures.lcmtf_us.size(), measured);
 }
 
 int runRelay(const std::string& url) {
