@@ -65,6 +65,10 @@ class MonitorLoop {
       if (chain_) chain_->reset();
       window_start = window_end;
       deadline += options_.duration;
+      // After a stall (a suspended process, an overloaded machine) the next window still
+      // spans a whole duration instead of reporting an instant.
+      if (deadline < Clock::now() + options_.duration / 2)
+        deadline = Clock::now() + options_.duration;
     }
     if (!options_.continuous) {  // stopped early: report what was heard so far
       report(out, window_start, now());
