@@ -5,21 +5,26 @@
 #
 #   scripts/demo.sh [--duration SECONDS] [--lcm-url URL]
 #
-# Runs until Ctrl-C, or for SECONDS; the default URL keeps all traffic on this machine (ttl=0).
+# Runs until Ctrl-C, or for SECONDS. The URL is --lcm-url, else $LCM_DEFAULT_URL, else one that
+# keeps all traffic on this machine (ttl=0).
 # With LCMTF_DEMO_BIN=DIR it uses the programs built in DIR instead of building.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 duration=0
-url='udpm://239.255.76.67:7667?ttl=0'
+url=${LCM_DEFAULT_URL:-'udpm://239.255.76.67:7667?ttl=0'}
 while [ $# -gt 0 ]; do
   case "$1" in
     --duration) duration=${2:?--duration needs a number of seconds}; shift 2 ;;
     --lcm-url) url=${2:?--lcm-url needs a URL}; shift 2 ;;
-    -h | --help) sed -n '2,9p' "$0" | cut -c3-; exit 0 ;;
+    -h | --help) sed -n '2,10p' "$0" | cut -c3-; exit 0 ;;
     *) echo "demo.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
+if ! [[ $duration =~ ^([0-9]+\.?[0-9]*|\.[0-9]+)$ ]]; then
+  echo "demo.sh: --duration: '$duration' is not a number of seconds (0 runs until Ctrl-C)" >&2
+  exit 2
+fi
 
 if [ -n "${LCMTF_DEMO_BIN:-}" ]; then
   bin=$LCMTF_DEMO_BIN

@@ -5,6 +5,7 @@
 #include <shared_mutex>
 
 #include "buffer_core_impl.hpp"
+#include "lcmtf/printable.hpp"
 
 namespace lcmtf {
 
@@ -83,7 +84,7 @@ void BufferCore::Impl::reportOnce(InsertRejection kind, const std::string& messa
     reported = true;
     reporter = reporter_;
   }
-  reporter(message + " (reported once; later ones are only counted)");
+  reporter(printable(message) + " (reported once; later ones are only counted)");
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "lcmtf/message_conversions.hpp"
+#include "lcmtf/printable.hpp"
 #include "open_lcm.hpp"
 
 namespace lcmtf {
@@ -77,7 +78,7 @@ void TransformListener::report(const std::string& kind, const std::string& messa
   if (reported) return;
   reported = true;
   if (options_.reporter) {
-    options_.reporter(message + " (reported once; later ones are only counted)");
+    options_.reporter(printable(message) + " (reported once; later ones are only counted)");
   }
 }
 

@@ -144,6 +144,15 @@ TEST(JointPublisherCommandLine, PositionsAreSplitAtTheLastEqualsSign) {
   EXPECT_EQ(config.generator.held[1], std::make_pair(std::string("odd=name"), -2e-3));
 }
 
+TEST(JointPublisherCommandLine, TheFileMayFollowAHeldPosition) {
+  const auto parsed =
+      parseJointPublisherCommandLine({"--position", "elbow_joint=0.5", "robot.urdf"});
+  ASSERT_TRUE(parsed.config) << parsed.message;
+  EXPECT_EQ(parsed.config->urdf_path, "robot.urdf");
+  ASSERT_EQ(parsed.config->generator.held.size(), 1u);
+  EXPECT_EQ(parsed.config->generator.held[0].first, "elbow_joint");
+}
+
 TEST(JointPublisherCommandLine, BadValuesExitTwoNamingTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
       {{"--rate", "0", "r.urdf"}, "--rate: 0 is outside [0.01, 10000]"},
@@ -258,6 +267,29 @@ TEST(JointPublisherRun, ADurationShorterThanThePeriodEndsOnTime) {
   EXPECT_LT(std::chrono::steady_clock::now() - start, 2s);
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("stopped after 1 joint states"));
+}
+
+TEST(JointPublisherRun, WithoutAFileItWaitsForADescriptionNoLongerThanItsDuration) {
+  const auto start = std::chrono::steady_clock::now();
+  const ProgramRun run = runJointPublisherWith({"--lcm-url", "memq://", "--duration", "0.3"});
+  EXPECT_LT(std::chrono::steady_clock::now() - start, 3s);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.err, HasSubstr("no valid robot description heard on ROBOT_DESCRIPTION within "
+                                 "0.3 s"));
+}
+
+TEST(JointPublisherRun, ARobotWithoutMovableJointsExitsOneSayingSo) {
+  const std::string path = testing::TempDir() + "/rigid.urdf";
+  {
+    std::ofstream(path) << "<robot name='rigid'><link name='a'/><link name='b'/><joint name='j' "
+                           "type='fixed'><parent link='a'/><child link='b'/></joint></robot>";
+  }
+  const ProgramRun run = runJointPublisherWith({"--lcm-url", "memq://", path});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.err,
+            "lcmtf-joint-publisher: robot 'rigid' has no movable joint that follows no other: no "
+            "joint states to publish\n");
+  std::remove(path.c_str());
 }
 
 TEST(JointPublisherRun, HoldingAnUnknownJointExitsOneNamingIt) {

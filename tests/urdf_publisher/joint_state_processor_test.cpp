@@ -131,6 +131,13 @@ TEST_F(JointStateProcessorTest, UnknownJointIsIgnoredAndReportedOncePerName) {
   EXPECT_THAT(reports[1], HasSubstr("ignored joint 'phantom'"));
 }
 
+TEST_F(JointStateProcessorTest, UnknownNameIsReportedWithItsControlBytesEscaped) {
+  JointStateProcessor processor(robot, options());
+  processor.process(jointState(kStamp, {"evil\x1b[2J\n"}, {1.0}));
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_THAT(reports[0], HasSubstr("ignored joint 'evil\\x1b[2J\\x0a'"));
+}
+
 TEST_F(JointStateProcessorTest, NonFinitePositionSkipsThatJointAndIsCounted) {
   JointStateProcessor processor(robot, options());
   const tf_message_t* batch = processor.process(jointState(
@@ -142,6 +149,43 @@ TEST_F(JointStateProcessorTest, NonFinitePositionSkipsThatJointAndIsCounted) {
   ASSERT_EQ(reports.size(), 3u);
   EXPECT_THAT(reports[0], HasSubstr("skipped joint 'elbow_joint' at position nan"));
   EXPECT_THAT(reports[1], HasSubstr("skipped joint 'gripper_left_finger_joint' at position inf"));
+}
+
+TEST_F(JointStateProcessorTest, MimicWhosePositionOverflowsIsSkippedAndCounted) {
+  // j2 = 1e300 * j1: a finite leader gives an infinite follower, which is never sent.
+  const RobotModel robot_with_gain = parseRobotModel(
+      "<robot name='r'><link name='a'/><link name='b'/><link name='c'/>"
+      "<joint name='j1' type='continuous'><parent link='a'/><child link='b'/></joint>"
+      "<joint name='j2' type='prismatic'><parent link='b'/><child link='c'/>"
+      "<limit lower='-9' upper='9' effort='1' velocity='1'/>"
+      "<mimic joint='j1' multiplier='1e300'/></joint></robot>",
+      "gain");
+  JointStateProcessor processor(robot_with_gain, options());
+  const tf_message_t* batch = processor.process(jointState(kStamp, {"j1"}, {1e10}));
+  ASSERT_THAT(children(batch), ElementsAre("b"));
+  EXPECT_EQ(batch->num_transforms, 1);
+  for (const transform_t& t : batch->transforms) {
+    EXPECT_TRUE(std::isfinite(t.translation.x) && std::isfinite(t.rotation.w));
+  }
+  EXPECT_EQ(processor.statistics().non_finite_positions, 1u);
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_THAT(reports[0], HasSubstr("skipped joint 'j2' at position inf"));
+  EXPECT_THAT(children(processor.process(jointState(kStamp + 1, {"j1"}, {1e-301}))),
+              ElementsAre("b", "c"));
+}
+
+TEST_F(JointStateProcessorTest, PrismaticPositionTooLargeForItsOriginIsSkipped) {
+  const RobotModel far_robot = parseRobotModel(
+      "<robot name='r'><link name='a'/><link name='b'/>"
+      "<joint name='slide' type='prismatic'><parent link='a'/><child link='b'/>"
+      "<origin xyz='1e308 0 0'/><limit lower='-9' upper='9' effort='1' velocity='1'/>"
+      "</joint></robot>",
+      "far");
+  JointStateProcessor processor(far_robot, options());
+  EXPECT_EQ(processor.process(jointState(kStamp, {"slide"}, {1e308})), nullptr);
+  EXPECT_EQ(processor.statistics().non_finite_positions, 1u);
+  EXPECT_EQ(processor.statistics().batches, 0u);
+  EXPECT_NE(processor.process(jointState(kStamp, {"slide"}, {-1.0})), nullptr);
 }
 
 TEST_F(JointStateProcessorTest, MessageWithAllPositionsBadPublishesNothing) {
@@ -239,6 +283,16 @@ TEST_F(JointStateProcessorTest, RepeatedJointInOneMessageKeepsTheFirstValue) {
   EXPECT_THAT(reports[0], HasSubstr("joint 'base_x_joint' appears twice in one joint state"));
 }
 
+TEST_F(JointStateProcessorTest, RepeatedJointAfterANonFiniteValueGivesItsFiniteValue) {
+  JointStateProcessor processor(robot, options());
+  const tf_message_t* batch =
+      processor.process(jointState(kStamp, {"base_x_joint", "base_x_joint"}, {kNaN, 0.9}));
+  ASSERT_THAT(children(batch), ElementsAre("base_x_link"));
+  EXPECT_NEAR(batch->transforms[0].translation.x, 0.9, 1e-15);
+  EXPECT_EQ(processor.statistics().non_finite_positions, 1u);
+  EXPECT_EQ(processor.statistics().duplicate_joints, 0u);
+}
+
 TEST_F(JointStateProcessorTest, NamesInAnotherOrderEachTimeStillFindTheirJoints) {
   JointStateProcessor processor(robot, options());
   const std::vector<std::vector<std::string>> orders{{"elbow_joint", "wrist_1_joint"},
@@ -319,6 +373,24 @@ TEST_F(JointStateProcessorTest, RateCapKeepsSlowSourcesWhole) {
   EXPECT_EQ(gripper, 20);
   EXPECT_GE(arm, 99);
   EXPECT_LE(arm, 101);
+}
+
+TEST_F(JointStateProcessorTest, RateCapHoldsForEachJointWhenSourcesShareMessages) {
+  JointStateOptions capped = options();
+  capped.publish_frequency = 50.0;
+  JointStateProcessor processor(robot, capped);
+  // The elbow alone at 0 ms, the head alone at 10 ms, then both together every 10 ms for 2 s:
+  // each joint is due every 20 ms, on alternate messages, and must not ride along in between.
+  processor.process(jointState(kStamp, {"elbow_joint"}, {0.1}));
+  processor.process(jointState(kStamp + 10'000, {"head_pan_joint"}, {0.1}));
+  std::map<std::string, int> published;
+  for (int k = 2; k < 202; ++k) {
+    const tf_message_t* batch = processor.process(
+        jointState(kStamp + k * 10'000, {"elbow_joint", "head_pan_joint"}, {0.1, 0.2}));
+    for (const std::string& child : children(batch)) ++published[child];
+  }
+  EXPECT_EQ(published["forearm_link"], 100);
+  EXPECT_EQ(published["head_pan_link"], 100);
 }
 
 TEST_F(JointStateProcessorTest, RateCapStartsAfreshWhenStampsGoBack) {

@@ -173,15 +173,22 @@ TEST(RobotModel, ADirectoryIsRefusedNamingIt) {
 
 TEST(RobotModel, XmlErrorIsRefusedNamingTheFileAndTheProblem) {
   const std::string path = testing::TempDir() + "/broken_xml.urdf";
-  std::ofstream(path) << "<robot name='r'><link name='a'>";
+  std::ofstream(path) << "<robot name='r'>\n  <link name='a'>\n</robot>\n";
   try {
     loadRobotModel(path);
     FAIL() << "accepted broken XML";
   } catch (const UrdfError& e) {
-    EXPECT_THAT(e.what(), HasSubstr(path + ": invalid URDF: "));
+    EXPECT_EQ(std::string(e.what()),
+              path + ": malformed XML at line 3, column 1: Error reading end tag.");
   }
   std::remove(path.c_str());
-  EXPECT_THAT(refusal("not xml at all"), HasSubstr("test.urdf: invalid URDF: "));
+  EXPECT_THAT(refusal("<robot name='r'><link name='a'>"), HasSubstr("test.urdf: malformed XML"));
+  EXPECT_EQ(refusal("not xml at all"),
+            "test.urdf: not XML: a URDF starts with '<', this starts with 'not xml at all'");
+  EXPECT_EQ(refusal(std::string("\x7f"
+                                "ELF\x02\x01",
+                                6)),
+            "test.urdf: not XML: a URDF starts with '<', this starts with '.ELF..'");
   EXPECT_THAT(refusal("<html/>"), HasSubstr("Could not find the 'robot' element"));
 }
 

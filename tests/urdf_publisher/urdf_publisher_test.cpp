@@ -152,6 +152,27 @@ TEST_F(UrdfPublisherTest, TheDescriptionIsSentAgainWhenAsked) {
   EXPECT_EQ(publisher.descriptionRequestsAnswered(), 1u);
 }
 
+TEST_F(UrdfPublisherTest, AFloodOfDescriptionRequestsIsAnsweredAtAModestRate) {
+  UrdfPublisher publisher(lcm_, robot_, options());
+  handleAll();
+  const resend_request_t ask = request();
+  for (int i = 0; i < 50; ++i) lcm_.publish(kRobotDescriptionRequestChannel, &ask);
+  handleAll();
+  EXPECT_EQ(descriptions_.messages.size(), 2u) << "the first request is answered at once";
+  EXPECT_EQ(publisher.descriptionRequestsAnswered(), 50u);
+  publisher.poll();
+  handleAll();
+  EXPECT_EQ(descriptions_.messages.size(), 2u);
+  std::this_thread::sleep_for(UrdfPublisher::kDescriptionAnswerInterval + 10ms);
+  publisher.poll();
+  handleAll();
+  EXPECT_EQ(descriptions_.messages.size(), 3u) << "the others share one later answer";
+  EXPECT_EQ(publisher.descriptionAnswersSent(), 2u);
+  publisher.poll();
+  handleAll();
+  EXPECT_EQ(descriptions_.messages.size(), 3u);
+}
+
 TEST_F(UrdfPublisherTest, StaticsAreSentAgainWhenAListenerAsksAndEveryPeriod) {
   UrdfPublisherOptions periodic = options();
   periodic.static_resend_period = 50ms;

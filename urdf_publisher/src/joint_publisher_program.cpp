@@ -78,6 +78,7 @@ ParsedCommandLine<JointPublisherConfig> parseJointPublisherCommandLine(
       ->check(finiteNumberIn(0.1, 3600.0))
       ->capture_default_str();
   app.add_option("--position", held, "Hold a joint at a position (repeatable), e.g. elbow=0.5")
+      ->allow_extra_args(false)
       ->check(heldJointSyntax());
   app.add_option("--duration", config.duration, "Seconds to run; 0 runs until Ctrl-C")
       ->check(finiteNumberIn(0.0, 1e9))
@@ -96,16 +97,24 @@ int runJointPublisher(const JointPublisherConfig& config, const std::atomic<bool
   if (!config.urdf_path.empty() && !robot) return 1;
   const std::unique_ptr<lcm::LCM> lcm = openLcm(config.lcm_url, output);
   if (!lcm) return 1;
+  const auto run_start = std::chrono::steady_clock::now();
+  const auto run_time =
+      std::chrono::duration_cast<Duration>(std::chrono::duration<double>(config.duration));
   if (!robot) {
     robot = waitForDescription(*lcm, config.description_channel, config.description_request_channel,
-                               config.authority, stop, output);
-    if (!robot) return 0;
+                               config.authority, stop, output, run_time);
+    if (!robot) return stop ? 0 : 1;
   }
   std::optional<JointStateGenerator> generator;
   try {
     generator.emplace(*robot, config.generator);
   } catch (const std::invalid_argument& e) {
     output.complain(std::string("--position: ") + e.what());
+    return 1;
+  }
+  if (generator->jointNames().empty()) {
+    output.complain("robot '" + robot->name +
+                    "' has no movable joint that follows no other: no joint states to publish");
     return 1;
   }
   output.say(std::to_string(generator->jointNames().size()) + " joints of robot '" + robot->name +
@@ -116,8 +125,7 @@ int runJointPublisher(const JointPublisherConfig& config, const std::atomic<bool
   const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(1.0 / config.rate));
   const auto start = std::chrono::steady_clock::now();
-  const auto end = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                               std::chrono::duration<double>(config.duration));
+  const auto end = run_start + run_time;
   auto next = start;
   std::uint64_t published = 0;
   std::uint64_t failed = 0;

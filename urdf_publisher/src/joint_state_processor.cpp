@@ -136,11 +136,14 @@ class JointStateProcessor::Impl {
     const std::int64_t stamp = options.ignore_timestamp ? toUtime(arrival) : state.utime;
     select(state);
     if (selected_.empty()) return nullptr;
-    if (period_us_ > 0 && !anyDue(stamp)) {
-      ++statistics.rate_limited;
-      return nullptr;
+    if (period_us_ > 0) {
+      keepOnlyDue(stamp);
+      if (selected_.empty()) {
+        ++statistics.rate_limited;
+        return nullptr;
+      }
     }
-    fill(stamp, arrival);
+    if (!fill(stamp, arrival)) return nullptr;
     ++statistics.batches;
     statistics.transforms += batch_.transforms.size();
     return &batch_;
@@ -177,20 +180,18 @@ class JointStateProcessor::Impl {
       Driven& driven = driven_[entry.index];
       if (driven.seen_in_message == message_serial_) {
         ++statistics.duplicate_joints;
-        reporter_.report("duplicate " + name, "joint '" + name +
-                                                  "' appears twice in one joint state; the first "
-                                                  "value is used (reported once per joint)");
+        reporter_.report("duplicate " + name,
+                         "joint '" + name +
+                             "' appears twice in one joint state; its first finite value is "
+                             "used (reported once per joint)");
+        continue;
+      }
+      const double position = state.position[i];
+      if (!std::isfinite(position)) {
+        reportNonFinite(name, position);
         continue;
       }
       driven.seen_in_message = message_serial_;
-      const double position = state.position[i];
-      if (!std::isfinite(position)) {
-        ++statistics.non_finite_positions;
-        reporter_.report("non-finite " + name,
-                         "skipped joint '" + name + "' at position " + std::to_string(position) +
-                             " (reported once per joint; later ones are only counted)");
-        continue;
-      }
       selected_.push_back({entry.index, position});
     }
   }
@@ -217,14 +218,37 @@ class JointStateProcessor::Impl {
                                             why + " (reported once per name)");
   }
 
-  bool anyDue(std::int64_t stamp) const {
-    for (const Selected& s : selected_) {
-      if (driven_[s.driven].schedule.due(stamp, period_us_)) return true;
-    }
-    return false;
+  void reportNonFinite(const std::string& name, double position) {
+    ++statistics.non_finite_positions;
+    reporter_.report("non-finite " + name,
+                     "skipped joint '" + name + "' at position " + std::to_string(position) +
+                         " (reported once per joint; later ones are only counted)");
   }
 
-  void fill(std::int64_t stamp, TimePoint arrival) {
+  // The rate cap is per joint: a joint published less than a period ago is left out.
+  void keepOnlyDue(std::int64_t stamp) {
+    selected_.erase(std::remove_if(selected_.begin(), selected_.end(),
+                                   [&](const Selected& s) {
+                                     return !driven_[s.driven].schedule.due(stamp, period_us_);
+                                   }),
+                    selected_.end());
+  }
+
+  // Writes the joint's transform as the batch's next one, unless a huge position (or a mimic's
+  // multiplier) made it non-finite.
+  bool append(std::size_t& k, const Output& output, double position, std::int64_t stamp) {
+    const Transform parent_T_child = parentTChild(output.joint, position);
+    if (!std::isfinite(position) || !parent_T_child.translation.allFinite() ||
+        !parent_T_child.rotation.coeffs().allFinite()) {
+      reportNonFinite(output.joint.name, position);
+      return false;
+    }
+    set(batch_.transforms[k++], output, parent_T_child, stamp);
+    return true;
+  }
+
+  // Fills the batch; false when no transform in it was finite.
+  bool fill(std::int64_t stamp, TimePoint arrival) {
     std::size_t count = 0;
     for (const Selected& s : selected_) {
       Driven& driven = driven_[s.driven];
@@ -233,18 +257,17 @@ class JointStateProcessor::Impl {
     }
     batch_.utime = toUtime(arrival);
     batch_.transforms.resize(count);
-    batch_.num_transforms = static_cast<std::int32_t>(count);
     std::size_t k = 0;
     for (const Selected& s : selected_) {
       const Driven& driven = driven_[s.driven];
-      const Output& output = outputs_[driven.output];
-      set(batch_.transforms[k++], output, parentTChild(output.joint, s.position), stamp);
+      append(k, outputs_[driven.output], s.position, stamp);
       for (const Follower& follower : driven.followers) {
-        const Output& followed = outputs_[follower.output];
-        set(batch_.transforms[k++], followed,
-            parentTChild(followed.joint, mimicPosition(follower.relation, s.position)), stamp);
+        append(k, outputs_[follower.output], mimicPosition(follower.relation, s.position), stamp);
       }
     }
+    batch_.transforms.resize(k);
+    batch_.num_transforms = static_cast<std::int32_t>(k);
+    return k > 0;
   }
 
   std::string robot_name_;

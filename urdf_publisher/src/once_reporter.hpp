@@ -5,6 +5,8 @@
 #include <string>
 #include <unordered_set>
 
+#include "lcmtf/printable.hpp"
+
 namespace lcmtf::urdf {
 
 /// Passes a problem to the sink the first time its key comes up and stays quiet after that,
@@ -25,7 +27,7 @@ class OnceReporter {
       return;
     }
     reported_.insert(key);
-    sink_(message);
+    sink_(printable(message));
   }
 
  private:

@@ -1,5 +1,6 @@
 #include "program_helpers.hpp"
 
+#include "format_number.hpp"
 #include "lcmtf_urdf/robot_description.hpp"
 
 namespace lcmtf::urdf {
@@ -37,15 +38,21 @@ std::optional<RobotModel> waitForDescription(lcm::LCM& lcm, const std::string& c
                                              const std::string& request_channel,
                                              const std::string& authority,
                                              const std::atomic<bool>& stop,
-                                             const ProgramOutput& output) {
+                                             const ProgramOutput& output, Duration timeout) {
   DescriptionWaitOptions options;
+  options.timeout = timeout;
   options.channel = channel;
   options.request_channel = request_channel;
   options.authority = authority;
   options.reporter = output.reporter();
   output.say("no URDF file given: waiting for a robot description on " + channel + " (asking on " +
              request_channel + ")");
-  return waitForRobotDescription(lcm, options, stop);
+  std::optional<RobotModel> robot = waitForRobotDescription(lcm, options, stop);
+  if (!robot && !stop) {
+    output.complain("no valid robot description heard on " + channel + " within " +
+                    formatNumber(std::chrono::duration<double>(timeout).count()) + " s");
+  }
+  return robot;
 }
 
 std::string describeUrl(const std::string& url) {

@@ -9,6 +9,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include "lcmtf/time.hpp"
 #include "lcmtf_urdf/robot_model.hpp"
 
 namespace lcmtf::urdf {
@@ -31,12 +32,14 @@ std::optional<RobotModel> loadFromFile(const std::string& path, const ProgramOut
 /// An LCM on `url`, or null (said on err).
 std::unique_ptr<lcm::LCM> openLcm(const std::string& url, const ProgramOutput& output);
 
-/// waitForRobotDescription, saying what it waits for; nothing when stopped first.
+/// waitForRobotDescription, saying what it waits for; nothing when stopped first or, with a
+/// `timeout` above zero, when none came within it (also said on err).
 std::optional<RobotModel> waitForDescription(lcm::LCM& lcm, const std::string& channel,
                                              const std::string& request_channel,
                                              const std::string& authority,
                                              const std::atomic<bool>& stop,
-                                             const ProgramOutput& output);
+                                             const ProgramOutput& output,
+                                             Duration timeout = Duration::zero());
 
 /// The URL as a user reads it: "" is LCM's default.
 std::string describeUrl(const std::string& url);

@@ -57,8 +57,11 @@ std::optional<RobotModel> waitForRobotDescription(lcm::LCM& lcm,
       lcm.subscribe(options.channel, &DescriptionCatcher::onMessage, &catcher);
   resend_request_t request;
   request.requester = options.authority;
-  auto next_request = std::chrono::steady_clock::now();
-  while (!catcher.robot && !stop) {
+  const auto start = std::chrono::steady_clock::now();
+  auto next_request = start;
+  const bool forever = options.timeout <= Duration::zero();
+  while (!catcher.robot && !stop &&
+         (forever || std::chrono::steady_clock::now() - start < options.timeout)) {
     if (std::chrono::steady_clock::now() >= next_request) {
       request.utime = toUtime(now());
       lcm.publish(options.request_channel, &request);

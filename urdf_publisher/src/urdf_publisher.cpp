@@ -43,7 +43,10 @@ UrdfPublisher::~UrdfPublisher() {
   if (description_request_subscription_) lcm_.unsubscribe(description_request_subscription_);
 }
 
-void UrdfPublisher::poll() { statics_.resendIfDue(); }
+void UrdfPublisher::poll() {
+  statics_.resendIfDue();
+  answerDescriptionIfDue();
+}
 
 void UrdfPublisher::onJointState(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {
   const tf_message_t* batch = processor_.process(buffer->data, buffer->data_size);
@@ -55,6 +58,21 @@ void UrdfPublisher::onDescriptionRequest(const lcm::ReceiveBuffer* buffer,
   resend_request_t request;
   if (!decodeMessage(buffer->data, buffer->data_size, request).ok) return;
   ++description_requests_answered_;
+  description_request_pending_ = true;
+  answerDescriptionIfDue();
+}
+
+// A flood of requests must not turn into a flood of URDF texts.
+void UrdfPublisher::answerDescriptionIfDue() {
+  if (!description_request_pending_) return;
+  const auto now_steady = std::chrono::steady_clock::now();
+  if (description_answers_sent_ > 0 &&
+      now_steady - last_description_answer_ < kDescriptionAnswerInterval) {
+    return;
+  }
+  description_request_pending_ = false;
+  last_description_answer_ = now_steady;
+  ++description_answers_sent_;
   publishDescription();
 }
 

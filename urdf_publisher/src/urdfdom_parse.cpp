@@ -8,6 +8,7 @@
 
 #include "joint_loops.hpp"
 #include "lcmtf_urdf/robot_model.hpp"
+#include "xml_syntax.hpp"
 
 namespace lcmtf::urdf {
 
@@ -35,6 +36,7 @@ std::mutex& consoleBridgeMutex() {
   if (urdf.find_first_not_of(" \t\r\n") == std::string::npos) {
     throw UrdfError(source + ": the robot description is empty");
   }
+  refuseMalformedXml(urdf, source);
   refuseJointLoops(urdf, source);
   CollectedErrors collected;
   ::urdf::ModelInterfaceSharedPtr model;

@@ -36,7 +36,7 @@ struct JointStateStatistics {
   std::uint64_t length_mismatches = 0;     ///< refused: names and positions differ in number
   std::uint64_t unstamped = 0;             ///< refused: utime zero or negative
   std::uint64_t rate_limited = 0;          ///< skipped: within the publish-frequency cap
-  std::uint64_t non_finite_positions = 0;  ///< entries skipped: NaN or infinite position
+  std::uint64_t non_finite_positions = 0;  ///< skipped: a NaN or infinite position or pose
   std::uint64_t unknown_joints = 0;        ///< entries naming no joint of the robot
   std::uint64_t ignored_joints = 0;    ///< entries naming a fixed, floating, planar or mimic joint
   std::uint64_t duplicate_joints = 0;  ///< entries repeating a joint of the same message

@@ -24,11 +24,13 @@ struct DescriptionWaitOptions {
   std::string request_channel = kRobotDescriptionRequestChannel;
   std::string authority = defaultAuthority();                ///< signs the requests
   Duration request_period = std::chrono::seconds(1);         ///< asks again this often
+  Duration timeout = Duration::zero();                       ///< gives up after this; 0: never
   std::function<void(const std::string& message)> reporter;  ///< descriptions refused, and why
 };
 
 /// The first description on options.channel that makes a valid robot, asking for one at once
-/// and every request_period; refused ones are reported. Nothing once `stop` is set.
+/// and every request_period; refused ones are reported. Nothing once `stop` is set or the
+/// timeout has passed.
 std::optional<RobotModel> waitForRobotDescription(lcm::LCM& lcm,
                                                   const DescriptionWaitOptions& options,
                                                   const std::atomic<bool>& stop);

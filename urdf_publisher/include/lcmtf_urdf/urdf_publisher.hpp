@@ -1,6 +1,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -38,7 +39,8 @@ class UrdfPublisher {
   UrdfPublisher(const UrdfPublisher&) = delete;
   UrdfPublisher& operator=(const UrdfPublisher&) = delete;
 
-  /// Resends the static transforms when their period is up; call between handle() calls.
+  /// Resends the static transforms when their period is up, and answers description requests
+  /// held back by the answer rate; call between handle() calls.
   void poll();
 
   /// The robot it publishes.
@@ -47,13 +49,17 @@ class UrdfPublisher {
   const JointStateStatistics& statistics() const { return processor_.statistics(); }
   /// Publications LCM refused (batches, statics, descriptions).
   std::uint64_t publishFailures() const { return publish_failures_; }
-  /// Requests for the URDF text answered.
+  /// Requests for the URDF text received; requests that come together share one answer.
   std::uint64_t descriptionRequestsAnswered() const { return description_requests_answered_; }
+  /// Answers sent to them: at most one per kDescriptionAnswerInterval.
+  std::uint64_t descriptionAnswersSent() const { return description_answers_sent_; }
+  static constexpr std::chrono::milliseconds kDescriptionAnswerInterval{100};
 
  private:
   void onJointState(const lcm::ReceiveBuffer* buffer, const std::string& channel);
   void onDescriptionRequest(const lcm::ReceiveBuffer* buffer, const std::string& channel);
   void publishDescription();
+  void answerDescriptionIfDue();
 
   lcm::LCM& lcm_;
   RobotModel robot_;
@@ -64,6 +70,9 @@ class UrdfPublisher {
   lcm::Subscription* description_request_subscription_ = nullptr;
   std::uint64_t publish_failures_ = 0;
   std::uint64_t description_requests_answered_ = 0;
+  std::uint64_t description_answers_sent_ = 0;
+  bool description_request_pending_ = false;
+  std::chrono::steady_clock::time_point last_description_answer_{};
 };
 
 }  // namespace lcmtf::urdf

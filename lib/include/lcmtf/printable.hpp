@@ -1,0 +1,12 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace lcmtf {
+
+/// Text from the network made safe for a terminal: bytes outside printable ASCII become \xNN
+/// and a backslash becomes \\, so a hostile name cannot move the cursor or hide itself.
+std::string printable(std::string_view text);
+
+}  // namespace lcmtf

@@ -1,0 +1,29 @@
+// Names from the network printed safely.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "lcmtf/printable.hpp"
+
+namespace lcmtf {
+namespace {
+
+TEST(Printable, OrdinaryFrameNamesAreUnchanged) {
+  EXPECT_EQ(printable("base_link"), "base_link");
+  EXPECT_EQ(printable("robot1/camera optical-frame.2"), "robot1/camera optical-frame.2");
+  EXPECT_EQ(printable(""), "");
+}
+
+TEST(Printable, ControlAndNonAsciiBytesBecomeHexEscapes) {
+  EXPECT_EQ(printable("a\x1b[2Jb"), "a\\x1b[2Jb");
+  EXPECT_EQ(printable("tab\there\nnew"), "tab\\x09here\\x0anew");
+  EXPECT_EQ(printable(std::string("nul\0end", 7)), "nul\\x00end");
+  EXPECT_EQ(printable("caf\xc3\xa9\x7f"), "caf\\xc3\\xa9\\x7f");
+}
+
+TEST(Printable, BackslashIsDoubledSoEscapesCannotBeForged) {
+  EXPECT_EQ(printable("a\\x1b"), "a\\\\x1b");
+}
+
+}  // namespace
+}  // namespace lcmtf
