@@ -58,7 +58,7 @@ void TransformListener::subscribe() {
     subscription->setQueueCapacity(options_.queue_capacity);
     subscriptions_.push_back(subscription);
   }
-  requestStatics();
+  if (options_.request_statics_at_start) requestStatics();
 }
 
 void TransformListener::requestStatics() {

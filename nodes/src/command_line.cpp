@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <ostream>
 
@@ -16,6 +17,8 @@ namespace {
 
 constexpr const char* kExitStatusText =
     "Exit status: 0 on success, 1 when the tool could not do its job, 2 for a bad argument.";
+
+}  // namespace
 
 std::optional<double> strictNumber(const std::string& text) {
   if (text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) return std::nullopt;
@@ -27,8 +30,6 @@ std::optional<double> strictNumber(const std::string& text) {
   }
   return value;
 }
-
-}  // namespace
 
 const char* toolsVersion() { return LCMTF_TOOLS_VERSION; }
 
@@ -105,6 +106,20 @@ CLI::Validator positiveFiniteNumber() {
                                      : "'" + text + "' is not a number greater than zero";
       },
       "");
+}
+
+CLI::Validator positiveFiniteNumberUpTo(double most) {
+  char shown[32];
+  std::snprintf(shown, sizeof shown, "%g", most);
+  const std::string range = std::string("(0, ") + shown + "]";
+  return CLI::Validator(
+      [most, range](std::string& text) {
+        const std::optional<double> value = strictNumber(text);
+        return value && *value > 0.0 && *value <= most
+                   ? std::string()
+                   : "'" + text + "' is not a number in " + range;
+      },
+      "in " + range);
 }
 
 }  // namespace lcmtf::nodes

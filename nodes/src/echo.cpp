@@ -1,6 +1,7 @@
 #include "lcmtf/nodes/echo.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <ostream>
 
 #include "lcmtf/nodes/pose_text.hpp"
@@ -60,6 +61,9 @@ class EchoLoop {
     const auto start = Clock::now();
     auto next_tick = start + period;
     bool printed = false;
+    // At a high --rate, "Waiting" would flood the terminal: at most once a second.
+    const auto waiting_period = std::max<Clock::duration>(period, std::chrono::seconds(1));
+    std::optional<Clock::time_point> last_waiting;
     while (!stop.load()) {
       const auto wait =
           std::chrono::duration_cast<std::chrono::milliseconds>(next_tick - Clock::now());
@@ -90,7 +94,15 @@ class EchoLoop {
              << std::endl;
         return kExitFailure;
       }
-      err_ << "Waiting: " << missing << std::endl;
+      if (!last_waiting || now_steady - *last_waiting >= waiting_period) {
+        err_ << "Waiting: " << missing << std::endl;
+        last_waiting = now_steady;
+      }
+    }
+    if (options_.once && !printed) {
+      err_ << kProgram << ": stopped before '" << options_.frame << "' in '"
+           << options_.reference_frame << "' could be looked up\n";
+      return kExitFailure;
     }
     return kExitSuccess;
   }
@@ -178,8 +190,7 @@ std::optional<int> parseEchoCommandLine(const std::vector<std::string>& args, Ec
       ->required()
       ->check(nonEmptyName());
   app->add_option("--rate", options.rate_hz, "Poses printed per second")
-      ->check(positiveFiniteNumber())
-      ->check(CLI::Range(0.0, 1000.0))
+      ->check(positiveFiniteNumberUpTo(1000.0))
       ->type_name("HZ")
       ->capture_default_str();
   app->add_option("--time", time_text,

@@ -21,7 +21,14 @@ std::string edgeLabel(const EdgeTraffic& edge, TimePoint heard_until) {
   std::string label = edge.is_static ? "static\n" : "";
   label += (several ? "broadcasters: " : "broadcaster: ") + joined(edge.authorities) + "\n";
   if (several) label += "CONFLICT: more than one broadcaster\n";
-  if (edge.is_static) return label + "heard " + std::to_string(edge.samples) + " times";
+  if (edge.is_static) {
+    label += edge.samples < 2 ? std::string("resent: - (heard once)\n")
+                              : "resent: " + fixedDecimals(edge.rate_hz, 2) + " Hz (heard " +
+                                    std::to_string(edge.samples) + " times)\n";
+    label += "most recent: " + toString(edge.last_received) + " (" +
+             fixedDecimals(toSeconds(heard_until - edge.last_received), 3) + " s old)\n";
+    return label + "buffer: one value, valid at every time";
+  }
   label += edge.samples < 2 ? std::string("average rate: - (heard once)\n")
                             : "average rate: " + fixedDecimals(edge.rate_hz, 2) + " Hz\n";
   label += "most recent: " + toString(edge.newest_stamp) + " (" +

@@ -33,22 +33,31 @@ constexpr const char* kExamples =
 
 constexpr const char* kClearScreen = "\033[H\033[2J";
 
+ListenerOptions listenerWithoutRequest(const TfConnection& connection) {
+  ListenerOptions options = listenerOptionsFor(connection, kProgram);
+  options.request_statics_at_start = false;
+  return options;
+}
+
 class MonitorLoop {
  public:
   MonitorLoop(const MonitorOptions& options, lcm::LCM& lcm)
-      : options_(options),
+      : started_(now()),
+        options_(options),
         lcm_(lcm),
-        listener_(buffer_, lcm, listenerOptionsFor(options.connection, kProgram)),
+        listener_(buffer_, lcm, listenerWithoutRequest(options.connection)),
         subscriber_(lcm, options.connection, traffic_,
                     [this](const tf_message_t& batch, bool is_static, TimePoint received) {
                       if (chain_) chain_->onBatch(batch, is_static, received);
                     }) {
     if (!options.frame_a.empty()) chain_.emplace(buffer_, options.frame_a, options.frame_b);
+    // Only now: LCM hands a message to the subscriptions that exist when it arrives.
+    listener_.requestStatics();
   }
 
   int run(std::ostream& out, std::ostream& err, const std::atomic<bool>& stop) {
     using Clock = std::chrono::steady_clock;
-    TimePoint window_start = now();
+    TimePoint window_start = started_;
     auto deadline = Clock::now() + options_.duration;
     while (!stop.load()) {
       const auto left =
@@ -102,6 +111,9 @@ class MonitorLoop {
     return kExitFailure;
   }
 
+  // Before the listener asks for the statics: answers may be stamped before the request's
+  // publish call returns.
+  const TimePoint started_;
   const MonitorOptions& options_;
   lcm::LCM& lcm_;
   Buffer buffer_;
@@ -126,8 +138,7 @@ std::optional<int> parseMonitorCommandLine(const std::vector<std::string>& args,
   app->add_option("--duration", duration_seconds,
                   "Seconds to listen before reporting (with --continuous: between reports, "
                   "each over the last window)")
-      ->check(positiveFiniteNumber())
-      ->check(CLI::Range(0.0, 86400.0))
+      ->check(positiveFiniteNumberUpTo(86400.0))
       ->type_name("SECONDS")
       ->capture_default_str();
   app->add_flag("-c,--continuous", options.continuous,

@@ -43,7 +43,7 @@ std::string formatPose(const TransformStamped& parent_T_child, TimePoint now, in
 
   std::ostringstream text;
   if (parent_T_child.stamp == kLatestTime) {
-    text << "Static (every edge between them is static)";
+    text << "At " << toString(now) << ", static (every edge between them is static)";
   } else {
     text << "At " << toString(parent_T_child.stamp) << " (age "
          << toString(Duration(now - parent_T_child.stamp)) << ")";

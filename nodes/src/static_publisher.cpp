@@ -1,6 +1,7 @@
 #include "lcmtf/nodes/static_publisher.hpp"
 
 #include <cstdio>
+#include <optional>
 #include <ostream>
 
 #include "lcmtf/nodes/roll_pitch_yaw.hpp"
@@ -66,7 +67,10 @@ struct TransformFlags {
     quaternion_options = {number("--qx", qx, "Rotation quaternion x"),
                           number("--qy", qy, "Rotation quaternion y"),
                           number("--qz", qz, "Rotation quaternion z"),
-                          number("--qw", qw, "Rotation quaternion w (scalar part)")};
+                          number("--qw", qw,
+                                 "Rotation quaternion w (scalar part). Components left out are "
+                                 "0 (--qz 1 alone turns half a turn about z); with none, no "
+                                 "rotation")};
     angle_options = {number("--roll", roll, "Rotation about x (rad)"),
                      number("--pitch", pitch, "Rotation about y (rad)"),
                      number("--yaw", yaw, "Rotation about z (rad)")};
@@ -106,11 +110,14 @@ StaticTransformSpec positionalSpec(const std::vector<std::string>& values) {
   StaticTransformSpec spec;
   spec.origin = "positional arguments";
   const std::size_t count = values.size();
-  if (count == 10 || count == 11) {
+  const auto isNumber = [](const std::string& text) { return strictNumber(text).has_value(); };
+  const bool ros1_period =
+      count == 10 || count == 11 || (count == 9 && !isNumber(values[6]) && isNumber(values[8]));
+  if (ros1_period) {
     throw CommandLineError(
         "got " + std::to_string(count) +
-        " positional arguments: a trailing publishing period (ROS 1) is not taken here; "
-        "transforms are resent every --period seconds");
+        " positional arguments ending in a number: a trailing publishing period (ROS 1) is not "
+        "taken here; transforms are resent every --period seconds");
   }
   if (count != 8 && count != 9) {
     throw CommandLineError("got " + std::to_string(count) +
@@ -140,7 +147,7 @@ std::string numbers(std::initializer_list<double> values) {
   std::string text = "[";
   for (double value : values) {
     char number[32];
-    std::snprintf(number, sizeof number, "%.6g", value);
+    std::snprintf(number, sizeof number, "%.6g", value == 0.0 ? 0.0 : value);  // never "-0"
     text += (text.size() > 1 ? " " : "") + std::string(number);
   }
   return text + "]";
@@ -217,9 +224,22 @@ std::optional<int> parseStaticPublisherCommandLine(const std::vector<std::string
 int runStaticPublisher(const StaticPublisherOptions& options, std::ostream& out, std::ostream& err,
                        const std::atomic<bool>& stop) {
   std::unique_ptr<lcm::LCM> lcm;
+  // Answering requests before saying it publishes, so that whoever waits for the line may ask.
+  std::optional<StaticTransformBroadcaster> broadcaster;
   if (!options.check_only) {
     lcm = openLcmOrReport(options.connection, kProgram, err);
     if (!lcm) return kExitBadArguments;
+    StaticBroadcasterOptions broadcaster_options;
+    broadcaster_options.channel = options.connection.static_channel;
+    broadcaster_options.request_channel = options.connection.request_channel;
+    broadcaster_options.authority = options.authority;
+    broadcaster_options.resend_period = options.resend_period;
+    broadcaster.emplace(*lcm, broadcaster_options);
+    if (!broadcaster->sendTransform(options.transforms)) {
+      err << kProgram << ": LCM could not publish on " << options.connection.static_channel
+          << " at " << describeLcmUrl(options.connection.lcm_url) << '\n';
+      return kExitFailure;
+    }
   }
   const std::string count = std::to_string(options.transforms.size()) + " static transform" +
                             (options.transforms.size() == 1 ? "" : "s");
@@ -239,27 +259,16 @@ int runStaticPublisher(const StaticPublisherOptions& options, std::ostream& out,
   out << std::flush;
   if (options.check_only) return kExitSuccess;
 
-  StaticBroadcasterOptions broadcaster_options;
-  broadcaster_options.channel = options.connection.static_channel;
-  broadcaster_options.request_channel = options.connection.request_channel;
-  broadcaster_options.authority = options.authority;
-  broadcaster_options.resend_period = options.resend_period;
-  StaticTransformBroadcaster broadcaster(*lcm, broadcaster_options);
-  if (!broadcaster.sendTransform(options.transforms)) {
-    err << kProgram << ": LCM could not publish on " << options.connection.static_channel << " at "
-        << describeLcmUrl(options.connection.lcm_url) << '\n';
-    return kExitFailure;
-  }
   while (!stop.load()) {
     if (!handleLcmFor(*lcm, std::chrono::milliseconds(20))) {
       err << kProgram << ": LCM stopped working at " << describeLcmUrl(options.connection.lcm_url)
           << '\n';
       return kExitFailure;
     }
-    broadcaster.resendIfDue();
+    broadcaster->resendIfDue();
   }
-  out << "Stopped after answering " << broadcaster.requestsAnswered() << " request"
-      << (broadcaster.requestsAnswered() == 1 ? "" : "s") << ".\n";
+  out << "Stopped after answering " << broadcaster->requestsAnswered() << " request"
+      << (broadcaster->requestsAnswered() == 1 ? "" : "s") << ".\n";
   return kExitSuccess;
 }
 

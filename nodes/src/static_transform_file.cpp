@@ -31,6 +31,7 @@ std::string knownKeys() {
 }
 
 std::string scalar(const YAML::Node& value, const std::string& key, const std::string& at) {
+  if (value.IsNull()) throw CommandLineError(at + ": '" + key + "' has no value");
   if (!value.IsScalar()) throw CommandLineError(at + ": '" + key + "' must be a single value");
   return value.Scalar();
 }

@@ -195,6 +195,7 @@ EdgeTraffic TfTraffic::summarizeEdge(const Edge& edge, std::int64_t start, std::
     tally.add(edge, arrival);
   }
   summary.rate_hz = ratePerSecond(summary.samples, first, last);
+  summary.last_received = fromUtime(last);
   summary.average_delay_s = delays.average();
   summary.max_delay_s = delays.maximum();
   std::vector<std::pair<std::size_t, std::uint32_t>> by_count;

@@ -43,8 +43,7 @@ std::optional<int> parseViewFramesCommandLine(const std::vector<std::string>& ar
   double wait_seconds = 5.0;
   bool dot_only = false;
   app->add_option("--wait", wait_seconds, "Seconds to listen before drawing")
-      ->check(positiveFiniteNumber())
-      ->check(CLI::Range(0.0, 3600.0))
+      ->check(positiveFiniteNumberUpTo(3600.0))
       ->type_name("SECONDS")
       ->capture_default_str();
   app->add_option("-o,--output", options.output,
@@ -75,10 +74,11 @@ int runViewFrames(const ViewFramesOptions& options, lcm::LCM& lcm, std::ostream&
   out << "Listening to " << source << " for " << fixedDecimals(toSeconds(options.wait), 1)
       << " s..." << std::endl;
 
+  // Answers to the request may be stamped before the call that sends it returns.
+  const TimePoint start = now();
   TfTraffic traffic;
   TfTrafficSubscriber subscriber(lcm, options.connection, traffic);
   subscriber.requestStatics(toolAuthority(kProgram));
-  const TimePoint start = now();
   const auto deadline = std::chrono::steady_clock::now() + options.wait;
   while (!stop.load() && std::chrono::steady_clock::now() < deadline) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(

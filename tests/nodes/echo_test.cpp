@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <sstream>
+#include <thread>
 
 #include "lcmtf/nodes/pose_text.hpp"
 #include "lcmtf/static_transform_broadcaster.hpp"
@@ -71,7 +72,7 @@ TEST(EchoCommandLine, BadArgumentsAreNamed) {
       {{"map"}, "FRAME is required"},
       {{}, "REFERENCE is required"},
       {{"map", "base", "extra"}, "extra"},
-      {{"map", "base", "--rate", "0"}, "--rate: '0' is not a number greater than zero"},
+      {{"map", "base", "--rate", "0"}, "--rate: '0' is not a number in (0, 1000]"},
       {{"map", "base", "--rate", "fast"}, "--rate: 'fast'"},
       {{"map", "base", "--rate", "5000"}, "--rate"},
       {{"map", "base", "--precision", "40"}, "--precision"},
@@ -107,12 +108,30 @@ TEST(PoseText, PrintsStampAgeTranslationQuaternionAnglesAndMatrix) {
             "                     [ 0.000,  0.000,  0.000,  1.000]\n");
 }
 
-TEST(PoseText, PrecisionSetsTheDigitsAndStaticChainsHaveNoStamp) {
+TEST(PoseText, RollPitchAndYawTogetherGiveTheQuaternionAnglesAndMatrixWorkedByHand) {
+  // Rz(0.3) Ry(0.2) Rx(0.1), its quaternion and matrix worked out from the half-angle formulas.
+  const Eigen::Quaterniond rotation(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) *
+                                    Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()) *
+                                    Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()));
+  const TransformStamped base_T_lidar{kStamp, "base", "lidar",
+                                      Transform({1.0, 2.0, 3.0}, rotation)};
+  const std::string text = formatPose(base_T_lidar, kStamp, 6);
+  EXPECT_THAT(text,
+              HasSubstr("  quaternion xyzw    [0.034271, 0.106021, 0.143572, 0.983347]\n"
+                        "  roll pitch yaw     [0.100000, 0.200000, 0.300000] rad\n"
+                        "                     [5.729578, 11.459156, 17.188734] deg\n"
+                        "  matrix             [ 0.936293, -0.275096,  0.218351,  1.000000]\n"
+                        "                     [ 0.289629,  0.956425, -0.036957,  2.000000]\n"
+                        "                     [-0.198669,  0.097843,  0.975170,  3.000000]\n"));
+}
+
+TEST(PoseText, PrecisionSetsTheDigitsAndStaticChainsSayWhenTheyWereLookedUp) {
   const TransformStamped base_T_camera{
       kLatestTime, "base", "camera",
       Transform({0.123456789, 0.0, 0.0}, Eigen::Quaterniond::Identity())};
   const std::string text = formatPose(base_T_camera, kStamp, 7);
-  EXPECT_THAT(text, HasSubstr("Static (every edge between them is static): 'camera' in 'base'"));
+  EXPECT_THAT(text, HasSubstr("At " + toString(kStamp) +
+                              ", static (every edge between them is static): 'camera' in 'base'"));
   EXPECT_THAT(text, HasSubstr("[0.1234568, 0.0000000, 0.0000000]"));
   EXPECT_EQ(fixedDecimals(-0.0004, 3), "0.000");
   EXPECT_EQ(fixedDecimals(-0.0006, 3), "-0.001");
@@ -170,6 +189,35 @@ TEST(Echo, RunGivesUpAfterTheTimeoutSayingWhatIsMissing) {
   EXPECT_THAT(err.str(), HasSubstr("Waiting: no transforms received yet on TF or TF_STATIC at "
                                    "memq://"));
   EXPECT_THAT(err.str(), HasSubstr("lcmtf-echo: gave up after 0.200000 s: no transforms received"));
+}
+
+TEST(Echo, WaitingIsSaidAtMostOnceASecondAtAHighRate) {
+  std::ostringstream out, err;
+  const std::atomic<bool> stop{false};
+  const int status = echoCommand(
+      {"--lcm-url", "memq://", "--timeout", "1.5", "--rate", "200", "map", "base"}, out, err, stop);
+  EXPECT_EQ(status, kExitFailure);
+  std::size_t waiting = 0;
+  for (std::size_t at = err.str().find("Waiting:"); at != std::string::npos;
+       at = err.str().find("Waiting:", at + 1)) {
+    ++waiting;
+  }
+  EXPECT_GE(waiting, 1u);
+  EXPECT_LE(waiting, 2u) << err.str();
+}
+
+TEST(Echo, OnceStoppedBeforeAnyPoseExitsOneSayingSo) {
+  std::ostringstream out, err;
+  std::atomic<bool> stop{false};
+  std::thread stopper([&stop] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    stop = true;
+  });
+  const int status = echoCommand({"--lcm-url", "memq://", "--once", "map", "base"}, out, err, stop);
+  stopper.join();
+  EXPECT_EQ(status, kExitFailure);
+  EXPECT_THAT(err.str(),
+              HasSubstr("lcmtf-echo: stopped before 'base' in 'map' could be looked up"));
 }
 
 }  // namespace

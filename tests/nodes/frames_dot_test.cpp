@@ -69,9 +69,15 @@ TEST(FramesDot, StaticEdgesAreDashedAndSaySo) {
   camera.is_static = true;
   camera.authorities = {"mounts"};
   camera.samples = 5;
+  camera.rate_hz = 1.0;
+  camera.last_received = kStart + std::chrono::milliseconds(4250);
   const std::string dot = framesToDot(summaryOf({camera}), "");
   EXPECT_THAT(dot, HasSubstr("\"base\" -> \"camera\" [label=\"static\\nbroadcaster: mounts\\n"
-                             "heard 5 times\", style=dashed];"));
+                             "resent: 1.00 Hz (heard 5 times)\\n"
+                             "most recent: 1700000004.250000 (0.750 s old)\\n"
+                             "buffer: one value, valid at every time\", style=dashed];"));
+  camera.samples = 1;
+  EXPECT_THAT(framesToDot(summaryOf({camera}), ""), HasSubstr("resent: - (heard once)\\n"));
 }
 
 TEST(FramesDot, AFrameFromTwoBroadcastersIsRed) {

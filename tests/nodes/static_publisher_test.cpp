@@ -138,6 +138,9 @@ TEST(StaticPublisherCommandLine, WrongNumberOfPositionalArgumentsSaysWhatIsExpec
               HasSubstr("got 5 positional arguments; expected 8 (x y z yaw pitch roll"));
   EXPECT_THAT(refusal({"0", "0", "0", "0", "0", "0", "1", "a", "b", "100"}),
               HasSubstr("trailing publishing period (ROS 1)"));
+  EXPECT_THAT(refusal({"1", "2", "3", "0", "0", "0", "a", "b", "10"}),
+              HasSubstr("got 9 positional arguments ending in a number: a trailing publishing "
+                        "period (ROS 1) is not taken here"));
 }
 
 TEST(StaticPublisherCommandLine, PositionalValueThatIsNoNumberIsNamed) {

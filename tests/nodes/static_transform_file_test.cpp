@@ -68,6 +68,7 @@ TEST(StaticTransformFile, ValueThatIsNoNumberIsNamedWithItsPosition) {
               HasSubstr("x: '.nan' is not a finite number"));
   EXPECT_THAT(refusal("- {frame_id: a, child_frame_id: b, x: [1, 2]}\n"),
               HasSubstr("'x' must be a single value"));
+  EXPECT_THAT(refusal("- frame_id: a\n  child_frame_id: b\n  x:\n"), HasSubstr("'x' has no value"));
 }
 
 TEST(StaticTransformFile, BrokenYamlIsReportedWithItsPosition) {

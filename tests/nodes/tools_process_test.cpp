@@ -266,6 +266,22 @@ TEST(MonitorProcess, ShowsTheChainAndItsNetDelay) {
   EXPECT_THAT(report, HasSubstr("base *"));
 }
 
+TEST(MonitorProcess, StaticsSentOnlyInAnswerToItsRequestAreInTheReport) {
+  const std::string url = testUrl();
+  ToolProcess statics(LCMTF_STATIC_PUBLISHER_PATH,
+                      {"--lcm-url", url, "--period", "0", "--authority", "mounts", "0", "0", "1",
+                       "0", "0", "0", "base", "camera"});
+  ASSERT_TRUE(statics.waitForStdout("Publishing", 5s));
+  for (const bool with_chain : {false, true}) {
+    std::vector<std::string> arguments{"--lcm-url", url, "--duration", "0.2"};
+    if (with_chain) arguments.insert(arguments.end(), {"base", "camera"});
+    ToolProcess monitor(LCMTF_MONITOR_PATH, arguments);
+    ASSERT_EQ(monitor.waitForExit(15s), std::optional<int>(0)) << monitor.stderrText();
+    EXPECT_THAT(monitor.stdoutText(),
+                testing::ContainsRegex("\n  camera( \\*)? +base +mounts +- +static "));
+  }
+}
+
 TEST(MonitorProcess, ContinuousModeReportsEachWindowUntilStopped) {
   const std::string url = testUrl();
   auto odom = publisher(url, "odometry", 50, "odom", "base");
@@ -324,6 +340,21 @@ TEST(MonitorProcess, HostileInputIsCountedAndDescribedWhileGoodTrafficIsReported
     std::this_thread::sleep_for(10ms);
   }
   EXPECT_GT(echo.stdoutText().size(), printed) << "echo goes on printing poses";
+}
+
+TEST(ViewFramesProcess, StaticsSentOnlyInAnswerToItsRequestAreDrawn) {
+  const std::string url = testUrl();
+  ToolProcess statics(LCMTF_STATIC_PUBLISHER_PATH,
+                      {"--lcm-url", url, "--period", "0", "--authority", "mounts", "0", "0", "1",
+                       "0", "0", "0", "base", "camera"});
+  ASSERT_TRUE(statics.waitForStdout("Publishing", 5s));
+  const std::filesystem::path directory = lcmtf_test::makeTemporaryDirectory("view-statics");
+  const std::string output = (directory / "tree").string();
+  ToolProcess view(LCMTF_VIEW_FRAMES_PATH, {"--lcm-url", url, "--wait", "0.2", "-o", output});
+  ASSERT_EQ(view.waitForExit(30s), std::optional<int>(0)) << view.stderrText();
+  EXPECT_THAT(lcmtf_test::readWholeFile(output + ".gv"),
+              HasSubstr("\"base\" -> \"camera\" [label=\"static\\nbroadcaster: mounts\\n"));
+  std::filesystem::remove_all(directory);
 }
 
 TEST(ViewFramesProcess, WritesTheTreeAsDotAndDrawsItWhenGraphvizIsThere) {

@@ -34,7 +34,7 @@ TEST(ViewFramesCommandLine, ReadsWaitOutputAndDotOnly) {
 }
 
 TEST(ViewFramesCommandLine, BadArgumentsAreNamed) {
-  EXPECT_THAT(parse({"--wait", "0"}).err, HasSubstr("--wait: '0' is not a number greater"));
+  EXPECT_THAT(parse({"--wait", "0"}).err, HasSubstr("--wait: '0' is not a number in (0, 3600]"));
   EXPECT_THAT(parse({"--wait", "soon"}).err, HasSubstr("--wait: 'soon'"));
   EXPECT_THAT(parse({"--output", ""}).err, HasSubstr("--output"));
   EXPECT_THAT(parse({"frames"}).err, HasSubstr("frames"));

@@ -84,11 +84,11 @@ int runUrdfPublisher(const UrdfPublisherConfig& config, const std::atomic<bool>&
     if (!robot) return 0;
     options.publish_description = false;  // it is another program's to publish
   }
-  output.say(describeRobot(*robot, prefix) + "  joint states from " + options.joint_states_channel +
-             ", transforms to " + options.tf_channel + " and " + options.tf_static_channel +
-             ", via " + describeUrl(config.lcm_url));
-
+  // Subscribed before it says so, so that whoever waits for the line may publish at once.
   UrdfPublisher publisher(*lcm, std::move(*robot), options);
+  output.say(describeRobot(publisher.robot(), prefix) + "  joint states from " +
+             options.joint_states_channel + ", transforms to " + options.tf_channel + " and " +
+             options.tf_static_channel + ", via " + describeUrl(config.lcm_url));
   while (!stop) {
     if (lcm->handleTimeout(100) < 0 && !stop)
       std::this_thread::sleep_for(std::chrono::milliseconds(10));

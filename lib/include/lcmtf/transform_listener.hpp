@@ -30,6 +30,7 @@ struct ListenerOptions {
   DecodeLimits limits;                           ///< bounds on incoming messages
   int queue_capacity = 1000;                     ///< messages LCM queues per channel
   std::string authority = defaultAuthority();    ///< names this listener in its requests
+  bool request_statics_at_start = true;  ///< false: the owner calls requestStatics() when ready
   /// Where the first refusal of each kind is reported; null: nowhere. Default: stderr.
   std::function<void(const std::string& message)> reporter = [](const std::string& message) {
     std::cerr << "lcmtf listener: " << message << '\n';

@@ -40,12 +40,17 @@ int reportBadArguments(const CLI::App& app, const std::string& message, std::ost
 /// The name a tool signs its messages with: "program@host:pid".
 std::string toolAuthority(const std::string& program);
 
+/// `text` as a finite number, all of it; nothing otherwise.
+std::optional<double> strictNumber(const std::string& text);
+
 /// `text` as a finite number; CommandLineError "what: 'text' is not a finite number" otherwise.
 double parseFiniteNumber(const std::string& text, const std::string& what);
 
 /// Validators for numbers typed by people: finite, and finite and above zero.
 CLI::Validator finiteNumber();
 CLI::Validator positiveFiniteNumber();
+/// Above zero and at most `most`; the help shows the range as (0, most].
+CLI::Validator positiveFiniteNumberUpTo(double most);
 /// A validator refusing the empty string (channel and frame names).
 CLI::Validator nonEmptyName();
 

@@ -33,6 +33,7 @@ struct EdgeTraffic {
   TimePoint oldest_stamp;  ///< of the history a Buffer would hold
   TimePoint newest_stamp;
   std::size_t buffered = 0;  ///< distinct stamps within the cache time behind the newest
+  TimePoint last_received;   ///< when the last of the window's samples arrived
 };
 
 /// One sender as heard in a window.
