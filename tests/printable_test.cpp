@@ -25,5 +25,11 @@ TEST(Printable, BackslashIsDoubledSoEscapesCannotBeForged) {
   EXPECT_EQ(printable("a\\x1b"), "a\\\\x1b");
 }
 
+TEST(Printable, ReportsKeepTheirLinesButNotOtherControlBytes) {
+  EXPECT_EQ(printableLines("frames:\n  a\x1b[31m\n\n"), "frames:\n  a\\x1b[31m\n\n");
+  EXPECT_EQ(printableLines("no newline\r"), "no newline\\x0d");
+  EXPECT_EQ(printableLines(""), "");
+}
+
 }  // namespace
 }  // namespace lcmtf

@@ -5,6 +5,7 @@
 #include <ostream>
 
 #include "lcmtf/nodes/pose_text.hpp"
+#include "lcmtf/printable.hpp"
 #include "lcmtf/transform_listener.hpp"
 
 namespace lcmtf::nodes {
@@ -90,12 +91,12 @@ class EchoLoop {
           describeMissing(buffer_, options_.reference_frame, options_.frame, time, heardAnything());
       if (!heardAnything()) missing += " on " + channels();
       if (timed_out) {
-        err_ << kProgram << ": gave up after " << toString(*options_.timeout) << ": " << missing
-             << std::endl;
+        err_ << kProgram << ": gave up after " << toString(*options_.timeout) << ": "
+             << printable(missing) << std::endl;
         return kExitFailure;
       }
       if (!last_waiting || now_steady - *last_waiting >= waiting_period) {
-        err_ << "Waiting: " << missing << std::endl;
+        err_ << "Waiting: " << printable(missing) << std::endl;
         last_waiting = now_steady;
       }
     }

@@ -8,6 +8,7 @@
 #include "lcmtf/nodes/chain_delay.hpp"
 #include "lcmtf/nodes/monitor_report.hpp"
 #include "lcmtf/nodes/tf_traffic_subscriber.hpp"
+#include "lcmtf/printable.hpp"
 #include "lcmtf/transform_listener.hpp"
 
 namespace lcmtf::nodes {
@@ -98,7 +99,7 @@ class MonitorLoop {
     const std::optional<ChainReport> chain =
         chain_ ? std::optional<ChainReport>(chain_->report()) : std::nullopt;
     if (options_.continuous && options_.clear_screen) out << kClearScreen;
-    out << formatMonitorReport(summary, source(), chain ? &*chain : nullptr);
+    out << printableLines(formatMonitorReport(summary, source(), chain ? &*chain : nullptr));
     if (options_.continuous && !options_.clear_screen) out << "----\n";
     out << std::flush;
     heard_anything_ = heard_anything_ || summary.messages > 0 || summary.malformed > 0;

@@ -10,6 +10,7 @@
 #include "lcmtf/nodes/graphviz.hpp"
 #include "lcmtf/nodes/pose_text.hpp"
 #include "lcmtf/nodes/tf_traffic_subscriber.hpp"
+#include "lcmtf/printable.hpp"
 
 namespace lcmtf::nodes {
 
@@ -106,7 +107,8 @@ int runViewFrames(const ViewFramesOptions& options, lcm::LCM& lcm, std::ostream&
       << plural(summary.authorities.size(), "broadcaster") << ", "
       << plural(summary.conflicts.size(), "conflict") << ".\n"
       << "Wrote " << dot_file << '\n';
-  for (const std::string& problem : summary.problems) out << "Problem: " << problem << '\n';
+  for (const std::string& problem : summary.problems)
+    out << "Problem: " << printable(problem) << '\n';
 
   int status = kExitSuccess;
   if (options.render) {

@@ -8,5 +8,7 @@ namespace lcmtf {
 /// Text from the network made safe for a terminal: bytes outside printable ASCII become \xNN
 /// and a backslash becomes \\, so a hostile name cannot move the cursor or hide itself.
 std::string printable(std::string_view text);
+/// The same, line by line: the newlines of a report are kept.
+std::string printableLines(std::string_view text);
 
 }  // namespace lcmtf
