@@ -100,17 +100,46 @@ inline Eigen::Vector3d rotated(const Eigen::Quaterniond& q, const Eigen::Vector3
   return v + q.w() * twice_cross + q.vec().cross(twice_cross);
 }
 
-// The product of the steps' values, top step first: ancestor_T_frame.
-Transform composeUp(const std::vector<PathEdge>& edges) {
-  if (edges.empty()) return Transform::identity();
-  Transform ancestor_T_frame = *edges.front().value;
-  for (auto edge = edges.begin() + 1; edge != edges.end(); ++edge) {
-    const Transform& step = *edge->value;
-    ancestor_T_frame.translation =
-        rotated(step.rotation, ancestor_T_frame.translation) + step.translation;
-    ancestor_T_frame.rotation = step.rotation * ancestor_T_frame.rotation;
+// step * below, in place.
+inline void composeOnto(const Transform& step, Transform& below) {
+  below.translation = rotated(step.rotation, below.translation) + step.translation;
+  below.rotation = step.rotation * below.rotation;
+}
+
+// The steps' values from first to last (bottom step first), composed: top_T_bottom.
+struct ChainProduct {
+  const PathEdge* first;
+  std::size_t count;
+  Transform value;
+};
+
+// Each path's lower and upper halves are four independent chains of products, composed in
+// one loop so that their long dependent arithmetic overlaps; the halves are joined after.
+Transform composePath(const std::vector<PathEdge>& source_edges,
+                      const std::vector<PathEdge>& target_edges) {
+  const std::size_t source_low = source_edges.size() / 2;
+  const std::size_t target_low = target_edges.size() / 2;
+  ChainProduct chains[4] = {
+      {source_edges.data(), source_low, Transform::identity()},
+      {source_edges.data() + source_low, source_edges.size() - source_low, Transform::identity()},
+      {target_edges.data(), target_low, Transform::identity()},
+      {target_edges.data() + target_low, target_edges.size() - target_low, Transform::identity()}};
+  const std::size_t longest =
+      std::max(source_edges.size() - source_low, target_edges.size() - target_low);
+  for (std::size_t i = 0; i < longest; ++i) {
+    for (ChainProduct& chain : chains) {
+      if (i < chain.count) composeOnto(*chain.first[i].value, chain.value);
+    }
   }
-  return ancestor_T_frame;
+  composeOnto(chains[1].value, chains[0].value);
+  composeOnto(chains[3].value, chains[2].value);
+  const Transform& ancestor_T_source = chains[0].value;
+  const Transform& ancestor_T_target = chains[2].value;
+  // target_T_ancestor * ancestor_T_source, without forming the inverse.
+  const Eigen::Quaterniond target_R_ancestor = ancestor_T_target.rotation.conjugate();
+  return Transform(
+      rotated(target_R_ancestor, ancestor_T_source.translation - ancestor_T_target.translation),
+      target_R_ancestor * ancestor_T_source.rotation);
 }
 
 // The first dynamic edge without data at `stamp` as a failure; fills the spans otherwise.
@@ -282,10 +311,7 @@ LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int6
       *value = Transform::identity();
     } else {
       settleValues(s);
-      const Transform ancestor_T_source = composeUp(s.source_edges);
-      *value = s.target_edges.empty()
-                   ? ancestor_T_source
-                   : composeUp(s.target_edges).inverse() * ancestor_T_source;
+      *value = composePath(s.source_edges, s.target_edges);
     }
   }
   return {};
