@@ -106,7 +106,10 @@ InsertRejection BufferCore::Impl::validate(const TransformStamped& transform, Tr
   const std::string_view parent = stripLeadingSlash(transform.parent_frame);
   const std::string_view child = stripLeadingSlash(transform.child_frame);
   value = transform.transform;
-  const double norm = value.rotation.norm();
+  // Most rotations are unit to a few ulps, and then their norm is not needed.
+  const double squared_norm = value.rotation.squaredNorm();
+  const bool plainly_unit = std::abs(squared_norm - 1.0) <= kUnitNormRounding;
+  const double norm = plainly_unit ? 1.0 : std::sqrt(squared_norm);
   if (parent.empty() || child.empty()) {
     reason = "empty " + std::string(child.empty() ? "child" : "parent") + " frame name in " +
              edgeName(transform);
@@ -127,7 +130,7 @@ InsertRejection BufferCore::Impl::validate(const TransformStamped& transform, Tr
   }
   // A unit quaternion computed in double precision is often a few ulps off 1: that is not
   // denormalized input, so it is stored as given and not counted.
-  normalized = std::abs(norm - 1.0) > kUnitNormRounding;
+  normalized = !plainly_unit && std::abs(norm - 1.0) > kUnitNormRounding;
   if (normalized) value.rotation.coeffs() /= norm;
   return InsertRejection::kCount;
 }
@@ -164,8 +167,8 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
       updateStaticChains();
     }
   } else {
-    if (record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_) ==
-        detail::InsertOutcome::kReplaced) {
+    if (record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_,
+                            anchorOf(frames_, parent_id)) == detail::InsertOutcome::kReplaced) {
       ++statistics_.replaced;
     }
     if (was_static) updateStaticChains();
@@ -331,8 +334,7 @@ void BufferCore::Impl::lookupHandles(FrameHandle target, FrameHandle source, std
   }
   const LookupFailure failure = lookup(target.id, source.id, stamp, &value);
   if (failure) {
-    raise(failure,
-          lookupWhat(std::string(nameOf(target.id)), std::string(nameOf(source.id))));
+    raise(failure, lookupWhat(std::string(nameOf(target.id)), std::string(nameOf(source.id))));
   }
 }
 

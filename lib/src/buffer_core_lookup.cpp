@@ -3,11 +3,14 @@
 
 #include "batch_interpolation.hpp"
 #include "buffer_core_impl.hpp"
+#include "compose.hpp"
 
 namespace lcmtf {
 
 namespace {
 
+using detail::composeOnto;
+using detail::rotated;
 using detail::SampleStatus;
 
 // Per-thread scratch, so that a lookup allocates nothing once warm.
@@ -43,31 +46,33 @@ std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId st
 namespace {
 
 // The next step up from `frame`: a whole static chain when allowed, else its own edge.
-// Sets edge.parent to kNoFrame at a root.
+// Sets edge.next to kNoFrame at a root.
 void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t stamp,
             bool whole_chains, PathEdge& edge) {
   const FrameRecord& record = frames[frame];
   edge.child = frame;
   edge.status = SampleStatus::kOk;
+  edge.anchored = false;
   if (!whole_chains && record.static_top != frame) {
-    edge.parent = record.static_top;
+    edge.parent = edge.next = record.static_top;
     edge.fixed = &record.static_top_T_frame;
     return;
   }
   const detail::TimeCache& cache = record.cache;
   if (cache.isStatic()) {
-    edge.parent = cache.staticValue().parent;
+    edge.parent = edge.next = cache.staticValue().parent;
     edge.fixed = &cache.staticValue().transform;
     return;
   }
   edge.fixed = nullptr;
-  if (stamp == 0) {
-    edge.parent = cache.newestParent();
-  } else {
-    edge.parent = cache.parentAt(stamp, edge.status);
-    // Loading the samples now gives the loads the rest of the walk to complete.
-    edge.hint = cache.prefetch(stamp);
+  edge.parent = stamp == 0 ? cache.newestParent() : cache.parentAt(stamp, edge.status);
+  edge.next = edge.parent;
+  if (!whole_chains && edge.parent != kNoFrame) {
+    edge.next = frames[edge.parent].static_top;
+    edge.anchored = edge.next != edge.parent;
   }
+  // Loading the samples now gives the loads the rest of the walk to complete.
+  if (stamp != 0) edge.hint = cache.prefetch(stamp, edge.anchored);
 }
 
 // Sets each step's value; the dynamic edges between two samples are interpolated together.
@@ -92,18 +97,6 @@ void settleValues(WalkScratch& s) {
     }
   }
   detail::interpolateBatch(s.tasks.data(), s.tasks.size());
-}
-
-// q v q*, written out so that it inlines into the loop below (Eigen's own call does not).
-inline Eigen::Vector3d rotated(const Eigen::Quaterniond& q, const Eigen::Vector3d& v) {
-  const Eigen::Vector3d twice_cross = 2.0 * q.vec().cross(v);
-  return v + q.w() * twice_cross + q.vec().cross(twice_cross);
-}
-
-// step * below, in place.
-inline void composeOnto(const Transform& step, Transform& below) {
-  below.translation = rotated(step.rotation, below.translation) + step.translation;
-  below.rotation = step.rotation * below.rotation;
 }
 
 // The steps' values from first to last (bottom step first), composed: top_T_bottom.
@@ -149,7 +142,9 @@ LookupFailure sampleEdges(const std::vector<FrameRecord>& frames, std::vector<Pa
   for (PathEdge& edge : edges) {
     if (!edge.isDynamic()) continue;
     const detail::TimeCache& cache = frames[edge.child].cache;
-    if (edge.status == SampleStatus::kOk) edge.status = cache.find(stamp, edge.span, edge.hint);
+    if (edge.status == SampleStatus::kOk) {
+      edge.status = cache.find(stamp, edge.span, edge.hint, edge.anchored);
+    }
     if (edge.status == SampleStatus::kOk) {
       if (parent_changed && edge.span.parent != edge.parent) *parent_changed = true;
       continue;
@@ -209,9 +204,11 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
     return failure;
   };
 
-  // Every frame the source's walk lands on is marked with its place in the walk. Static
-  // chains are crossed in one step, so the target's walk may first meet the source's above
-  // their true common ancestor, but only by static edges, which cancel out when composed.
+  // Every frame the source's walk lands on is marked with its place in the walk, and so is the
+  // parent of each anchored step, as reached by that step without its anchor. Static chains
+  // are crossed in one step, so the target's walk may first meet the source's above their
+  // true common ancestor, but only by static edges, which cancel out when composed.
+  constexpr std::uint32_t kUnanchored = std::uint32_t{1} << 31;
   FrameId frame = source;
   FrameId source_root = source;
   for (std::size_t depth = 0;; ++depth) {
@@ -225,25 +222,37 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
     // Filled in place: a copy of a freshly written edge would stall on store forwarding.
     PathEdge& edge = source_edges.emplace_back();
     stepUp(frames_, frame, stamp, whole_chains, edge);
-    if (edge.parent == kNoFrame) {
+    if (edge.next == kNoFrame) {
       source_edges.pop_back();
       source_root = frame;
       break;
     }
-    frame = edge.parent;
+    if (edge.anchored) {
+      if (edge.parent == target) {
+        edge.dropAnchor();
+        *ancestor = target;
+        return {};
+      }
+      s.visit_epoch[edge.parent] = epoch;
+      s.visit_index[edge.parent] = static_cast<std::uint32_t>(source_edges.size()) | kUnanchored;
+    }
+    frame = edge.next;
   }
 
   frame = target;
   for (std::size_t depth = 0;; ++depth) {
     if (depth > max_depth) return loopFailure(target);
     if (s.visit_epoch[frame] == epoch) {
-      source_edges.resize(s.visit_index[frame]);
+      const std::uint32_t index = s.visit_index[frame];
+      source_edges.resize(index & ~kUnanchored);
+      if (index & kUnanchored) source_edges.back().dropAnchor();
       *ancestor = frame;
       return {};
     }
     PathEdge& edge = target_edges.emplace_back();
     stepUp(frames_, frame, stamp, whole_chains, edge);
-    if (edge.parent == kNoFrame) {
+    if (edge.anchored && s.visit_epoch[edge.parent] == epoch) edge.dropAnchor();
+    if (edge.next == kNoFrame) {
       target_edges.pop_back();
       LookupFailure failure;
       failure.kind = LookupFailure::Kind::kNotConnected;
@@ -254,7 +263,7 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
       failure.edge_parent = frame;
       return failure;
     }
-    frame = edge.parent;
+    frame = edge.next;
   }
 }
 
@@ -342,6 +351,35 @@ LookupFailure BufferCore::Impl::resolveAll(const std::string& target, const std:
 }
 
 void BufferCore::Impl::updateStaticChains() {
+  struct Chain {
+    FrameId top;
+    Transform top_T_frame;
+  };
+  std::vector<Chain> before;
+  before.reserve(frames_.size());
+  for (const FrameRecord& record : frames_) {
+    before.push_back({record.static_top, record.static_top_T_frame});
+  }
+  computeStaticChains();
+  // Edges into a frame whose chain changed hold samples anchored to the old chain.
+  std::vector<char> changed(frames_.size(), 0);
+  for (FrameId frame = 1; frame < frames_.size(); ++frame) {
+    const FrameRecord& record = frames_[frame];
+    const Chain& old = before[frame];
+    changed[frame] =
+        old.top != record.static_top ||
+        old.top_T_frame.translation != record.static_top_T_frame.translation ||
+        old.top_T_frame.rotation.coeffs() != record.static_top_T_frame.rotation.coeffs();
+  }
+  auto anchor = [this](FrameId parent) { return anchorOf(frames_, parent); };
+  for (FrameRecord& record : frames_) {
+    detail::TimeCache& cache = record.cache;
+    if (cache.isStatic() || cache.empty()) continue;
+    if (!cache.hasSingleParent() || changed[cache.newestParent()]) cache.reanchor(anchor);
+  }
+}
+
+void BufferCore::Impl::computeStaticChains() {
   // Memoized climb: a frame's top is its static parent's top, found before the frame itself.
   constexpr FrameId kUnknown = static_cast<FrameId>(-1);
   for (FrameRecord& record : frames_) record.static_top = kUnknown;
