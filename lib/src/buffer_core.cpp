@@ -503,8 +503,8 @@ std::vector<std::string> BufferCore::getFrameChain(const std::string& target,
   std::int64_t stamp = toUtime(time);
   if (!failure && stamp == 0) failure = impl_->latestCommonTime(target_id, source_id, stamp);
   if (!failure) {
-    failure =
-        impl_->walk(target_id, source_id, stamp, up_from_source, up_from_target, &ancestor, true);
+    failure = impl_->walk(target_id, source_id, stamp, up_from_source, up_from_target, &ancestor,
+                          Steps::kEdgeByEdge);
   }
   if (failure) impl_->raise(failure, "frame chain from '" + source + "' to '" + target + "'");
   std::vector<std::string> chain;

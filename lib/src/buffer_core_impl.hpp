@@ -60,6 +60,10 @@ struct PathEdge {
   }
 };
 
+/// How a walk steps up the tree: to sample the values (static chains in one step, and the
+/// samples loaded early), only to check that the values exist, or edge by edge.
+enum class Steps { kSampled, kChecked, kEdgeByEdge };
+
 /// Why a lookup failed, kept as plain data so a successful lookup pays nothing for it and
 /// canTransform pays for no message it does not print.
 struct LookupFailure {
@@ -112,10 +116,10 @@ class BufferCore::Impl {
   }
   LookupFailure latestCommonTime(FrameId target, FrameId source, std::int64_t& stamp) const;
   /// The steps from each frame up to their common ancestor at `stamp` (0: the tree as of each
-  /// edge's newest sample); with `whole_chains`, chains of static edges step edge by edge.
+  /// edge's newest sample).
   LookupFailure walk(FrameId target, FrameId source, std::int64_t stamp,
                      std::vector<PathEdge>& source_edges, std::vector<PathEdge>& target_edges,
-                     FrameId* ancestor, bool whole_chains = false) const;
+                     FrameId* ancestor, Steps steps = Steps::kSampled) const;
   /// Recomputes every frame's static_top after a static edge changed, and the anchored samples
   /// of the edges into frames whose chain changed (exclusive lock).
   void updateStaticChains();

@@ -47,8 +47,9 @@ namespace {
 
 // The next step up from `frame`: a whole static chain when allowed, else its own edge.
 // Sets edge.next to kNoFrame at a root.
-void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t stamp,
-            bool whole_chains, PathEdge& edge) {
+void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t stamp, Steps steps,
+            PathEdge& edge) {
+  const bool whole_chains = steps == Steps::kEdgeByEdge;
   const FrameRecord& record = frames[frame];
   edge.child = frame;
   edge.status = SampleStatus::kOk;
@@ -72,7 +73,7 @@ void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t 
     edge.anchored = edge.next != edge.parent;
   }
   // Loading the samples now gives the loads the rest of the walk to complete.
-  if (stamp != 0) edge.hint = cache.prefetch(stamp, edge.anchored);
+  if (stamp != 0 && steps == Steps::kSampled) edge.hint = cache.prefetch(stamp, edge.anchored);
 }
 
 // Sets each step's value; the dynamic edges between two samples are interpolated together.
@@ -135,13 +136,15 @@ Transform composePath(const std::vector<PathEdge>& source_edges,
       target_R_ancestor * ancestor_T_source.rotation);
 }
 
-// The first dynamic edge without data at `stamp` as a failure; fills the spans otherwise.
+// The first dynamic edge without data at `stamp` as a failure; fills the spans otherwise,
+// unless `check_only` (the walk at `stamp` has found whether each edge has data there).
 // A span whose parent is not the one the walk used means the tree was different at `stamp`.
 LookupFailure sampleEdges(const std::vector<FrameRecord>& frames, std::vector<PathEdge>& edges,
-                          std::int64_t stamp, bool* parent_changed) {
+                          std::int64_t stamp, bool* parent_changed, bool check_only = false) {
   for (PathEdge& edge : edges) {
     if (!edge.isDynamic()) continue;
     const detail::TimeCache& cache = frames[edge.child].cache;
+    if (edge.status == SampleStatus::kOk && check_only) continue;
     if (edge.status == SampleStatus::kOk) {
       edge.status = cache.find(stamp, edge.span, edge.hint, edge.anchored);
     }
@@ -184,7 +187,7 @@ std::int64_t commonNewest(const std::vector<FrameRecord>& frames,
 LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_t stamp,
                                      std::vector<PathEdge>& source_edges,
                                      std::vector<PathEdge>& target_edges, FrameId* ancestor,
-                                     bool whole_chains) const {
+                                     Steps steps) const {
   WalkScratch& s = scratch;
   if (s.visit_epoch.size() < frames_.size()) {
     s.visit_epoch.resize(frames_.size(), 0);
@@ -221,7 +224,7 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
     }
     // Filled in place: a copy of a freshly written edge would stall on store forwarding.
     PathEdge& edge = source_edges.emplace_back();
-    stepUp(frames_, frame, stamp, whole_chains, edge);
+    stepUp(frames_, frame, stamp, steps, edge);
     if (edge.next == kNoFrame) {
       source_edges.pop_back();
       source_root = frame;
@@ -250,7 +253,7 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
       return {};
     }
     PathEdge& edge = target_edges.emplace_back();
-    stepUp(frames_, frame, stamp, whole_chains, edge);
+    stepUp(frames_, frame, stamp, steps, edge);
     if (edge.anchored && s.visit_epoch[edge.parent] == epoch) edge.dropAnchor();
     if (edge.next == kNoFrame) {
       target_edges.pop_back();
@@ -292,8 +295,13 @@ LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int6
   } else {
     FrameId ancestor = kNoFrame;
     bool parent_changed = false;
-    failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor);
-    if (!failure && stamp == 0) {
+    const bool check_only = value == nullptr && stamp != 0;
+    failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor,
+                   check_only ? Steps::kChecked : Steps::kSampled);
+    if (!failure && check_only) {
+      failure = sampleEdges(frames_, s.source_edges, stamp, nullptr, true);
+      if (!failure) failure = sampleEdges(frames_, s.target_edges, stamp, nullptr, true);
+    } else if (!failure && stamp == 0) {
       // The tree as of each edge's newest sample gives the latest common time; if an edge had
       // another parent at that time, walk the tree as it was then.
       stamp = commonNewest(frames_, s.source_edges, s.target_edges);
