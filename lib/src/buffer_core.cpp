@@ -5,6 +5,7 @@
 #include <shared_mutex>
 
 #include "buffer_core_impl.hpp"
+#include "compose.hpp"
 
 namespace lcmtf {
 
@@ -376,7 +377,8 @@ TransformStamped BufferCore::lookupTransform(const std::string& target, TimePoin
   if (failure) impl_->raise(failure, lookupWhat(fixed, source));
   failure = impl_->lookup(target_id, fixed_id, target_stamp, &target_T_fixed);
   if (failure) impl_->raise(failure, lookupWhat(target, fixed));
-  return impl_->stamped(target_id, source_id, target_stamp, target_T_fixed * fixed_T_source);
+  return impl_->stamped(target_id, source_id, target_stamp,
+                        detail::composed(target_T_fixed, fixed_T_source));
 }
 
 bool BufferCore::canTransform(const std::string& target, const std::string& source, TimePoint time,
