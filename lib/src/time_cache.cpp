@@ -11,7 +11,6 @@ void TimeCache::setStatic(FrameId parent, const Transform& transform) {
   parents_.clear();
   transforms_.clear();
   anchored_.clear();
-  anchored_.shrink_to_fit();
   anchoring_ = false;
   static_value_ = EdgeValue{parent, transform};
   mask_ = 0;
@@ -57,9 +56,9 @@ void TimeCache::put(std::size_t index, std::int64_t stamp, FrameId parent,
   const std::size_t at = slot(index);
   stamps_[at] = stamp;
   parents_[at] = parent;
-  transforms_[at] = transform;
+  transforms_.store(at, transform);
   if (anchoring_)
-    anchored_[at] = anchor_T_parent ? composed(*anchor_T_parent, transform) : transform;
+    anchored_.store(at, anchor_T_parent ? composed(*anchor_T_parent, transform) : transform);
 }
 
 void TimeCache::move(std::size_t from, std::size_t to) {
@@ -67,15 +66,15 @@ void TimeCache::move(std::size_t from, std::size_t to) {
   const std::size_t destination = slot(to);
   stamps_[destination] = stamps_[source];
   parents_[destination] = parents_[source];
-  transforms_[destination] = transforms_[source];
-  if (anchoring_) anchored_[destination] = anchored_[source];
+  transforms_.store(destination, transforms_[source]);
+  if (anchoring_) anchored_.store(destination, anchored_[source]);
 }
 
 // Until now every anchor was the identity: each anchored value is the sample itself.
 void TimeCache::startAnchoring() {
   anchoring_ = true;
-  anchored_.resize(transforms_.size());
-  for (std::size_t i = 0; i < count_; ++i) anchored_[slot(i)] = transformAt(i);
+  TransformRing(transforms_.size()).swap(anchored_);
+  for (std::size_t i = 0; i < count_; ++i) anchored_.store(slot(i), transformAt(i));
 }
 
 void TimeCache::noteParentChanges(std::size_t index) {
@@ -103,13 +102,13 @@ void TimeCache::grow(std::int64_t cache_time) {
   }
   std::vector<std::int64_t> stamps(wanted);
   std::vector<FrameId> parents(wanted);
-  std::vector<Transform, CacheLineAllocator<Transform>> transforms(wanted);
-  std::vector<Transform, CacheLineAllocator<Transform>> anchored(anchoring_ ? wanted : 0);
+  TransformRing transforms(wanted);
+  TransformRing anchored(anchoring_ ? wanted : 0);
   for (std::size_t i = 0; i < count_; ++i) {
     stamps[i] = stampAt(i);
     parents[i] = parentOf(i);
-    transforms[i] = transformAt(i);
-    if (anchoring_) anchored[i] = anchored_[slot(i)];
+    transforms.store(i, transformAt(i));
+    if (anchoring_) anchored.store(i, anchored_[slot(i)]);
   }
   stamps_.swap(stamps);
   parents_.swap(parents);
@@ -174,9 +173,9 @@ std::size_t TimeCache::prefetch(std::int64_t stamp, bool anchored) const {
   }
   const std::size_t guess = guessIndex(stamp);
   __builtin_prefetch(&stamps_[slot(guess)]);
-  const Transform* transforms = ring(anchored);
-  __builtin_prefetch(&transforms[slot(guess)]);
-  __builtin_prefetch(&transforms[slot(guess + 1)]);
+  const TransformRing& transforms = ring(anchored);
+  __builtin_prefetch(transforms.address(slot(guess)));
+  __builtin_prefetch(transforms.address(slot(guess + 1)));
   return guess;
 }
 
@@ -244,7 +243,7 @@ SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span, std::size_t h
   const std::size_t index = indexAtOrBefore(stamp, hint);
   const std::int64_t older_stamp = stampAt(index);
   const FrameId parent = hasSingleParent() ? newest_parent_ : parentOf(index);
-  const Transform* transforms = ring(anchored);
+  const TransformRing& transforms = ring(anchored);
   if (older_stamp == stamp || (!hasSingleParent() && parentOf(index + 1) != parent)) {
     span = SampleSpan{&transforms[slot(index)], nullptr, 0.0, parent};
     return SampleStatus::kOk;

@@ -4,8 +4,8 @@
 #include <limits>
 #include <vector>
 
-#include "cache_line_allocator.hpp"
 #include "lcmtf/transform.hpp"
+#include "transform_ring.hpp"
 
 namespace lcmtf::detail {
 
@@ -103,8 +103,8 @@ class TimeCache {
   std::int64_t stampAt(std::size_t index) const { return stamps_[slot(index)]; }
   FrameId parentOf(std::size_t index) const { return parents_[slot(index)]; }
   const Transform& transformAt(std::size_t index) const { return transforms_[slot(index)]; }
-  const Transform* ring(bool anchored) const {
-    return anchored && anchoring_ ? anchored_.data() : transforms_.data();
+  const TransformRing& ring(bool anchored) const {
+    return anchored && anchoring_ ? anchored_ : transforms_;
   }
   void put(std::size_t index, std::int64_t stamp, FrameId parent, const Transform& transform,
            const Transform* anchor_T_parent);
@@ -118,9 +118,9 @@ class TimeCache {
 
   std::vector<std::int64_t> stamps_;
   std::vector<FrameId> parents_;
-  std::vector<Transform, CacheLineAllocator<Transform>> transforms_;
+  TransformRing transforms_;
   // In use only once some sample's anchor is not the identity.
-  std::vector<Transform, CacheLineAllocator<Transform>> anchored_;
+  TransformRing anchored_;
   bool anchoring_ = false;
   EdgeValue static_value_;
   std::size_t mask_ = 0;
@@ -146,13 +146,12 @@ void TimeCache::reanchor(AnchorOf anchorOf) {
   anchoring_ = any;
   if (!any) {
     anchored_.clear();
-    anchored_.shrink_to_fit();
     return;
   }
-  if (anchored_.size() != transforms_.size()) anchored_.resize(transforms_.size());
+  if (anchored_.size() != transforms_.size()) TransformRing(transforms_.size()).swap(anchored_);
   for (std::size_t i = 0; i < count_; ++i) {
     const Transform* anchor_T_parent = anchorOf(parentOf(i));
-    anchored_[slot(i)] = anchor_T_parent ? *anchor_T_parent * transformAt(i) : transformAt(i);
+    anchored_.store(slot(i), anchor_T_parent ? *anchor_T_parent * transformAt(i) : transformAt(i));
   }
 }
 
