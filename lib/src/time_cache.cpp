@@ -100,8 +100,8 @@ void TimeCache::grow(std::int64_t cache_time) {
     const double with_margin = std::min(window_samples + 16.0, double(kLargestJump));
     while (static_cast<double>(wanted) < with_margin) wanted *= 2;
   }
-  std::vector<std::int64_t> stamps(wanted);
-  std::vector<FrameId> parents(wanted);
+  UnfilledArray<std::int64_t> stamps(wanted);
+  UnfilledArray<FrameId> parents(wanted);
   TransformRing transforms(wanted);
   TransformRing anchored(anchoring_ ? wanted : 0);
   for (std::size_t i = 0; i < count_; ++i) {

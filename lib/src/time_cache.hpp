@@ -2,10 +2,10 @@
 
 #include <cstdint>
 #include <limits>
-#include <vector>
 
 #include "lcmtf/transform.hpp"
 #include "transform_ring.hpp"
+#include "unfilled_array.hpp"
 
 namespace lcmtf::detail {
 
@@ -116,8 +116,8 @@ class TimeCache {
   void noteParentChanges(std::size_t index);
   void refreshEnds();
 
-  std::vector<std::int64_t> stamps_;
-  std::vector<FrameId> parents_;
+  UnfilledArray<std::int64_t> stamps_;
+  UnfilledArray<FrameId> parents_;
   TransformRing transforms_;
   // In use only once some sample's anchor is not the identity.
   TransformRing anchored_;
