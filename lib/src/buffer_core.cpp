@@ -5,6 +5,7 @@
 #include <shared_mutex>
 
 #include "buffer_core_impl.hpp"
+#include "compose.hpp"
 #include "lcmtf/printable.hpp"
 
 namespace lcmtf {
@@ -107,7 +108,10 @@ InsertRejection BufferCore::Impl::validate(const TransformStamped& transform, Tr
   const std::string_view parent = stripLeadingSlash(transform.parent_frame);
   const std::string_view child = stripLeadingSlash(transform.child_frame);
   value = transform.transform;
-  const double norm = value.rotation.norm();
+  // Most rotations are unit to a few ulps, and then their norm is not needed.
+  const double squared_norm = value.rotation.squaredNorm();
+  const bool plainly_unit = std::abs(squared_norm - 1.0) <= kUnitNormRounding;
+  const double norm = plainly_unit ? 1.0 : std::sqrt(squared_norm);
   if (parent.empty() || child.empty()) {
     reason = "empty " + std::string(child.empty() ? "child" : "parent") + " frame name in " +
              edgeName(transform);
@@ -128,7 +132,7 @@ InsertRejection BufferCore::Impl::validate(const TransformStamped& transform, Tr
   }
   // A unit quaternion computed in double precision is often a few ulps off 1: that is not
   // denormalized input, so it is stored as given and not counted.
-  normalized = std::abs(norm - 1.0) > kUnitNormRounding;
+  normalized = !plainly_unit && std::abs(norm - 1.0) > kUnitNormRounding;
   if (normalized) value.rotation.coeffs() /= norm;
   return InsertRejection::kCount;
 }
@@ -165,8 +169,8 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
       updateStaticChains();
     }
   } else {
-    if (record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_) ==
-        detail::InsertOutcome::kReplaced) {
+    if (record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_,
+                            anchorOf(frames_, parent_id)) == detail::InsertOutcome::kReplaced) {
       ++statistics_.replaced;
     }
     if (was_static) updateStaticChains();
@@ -332,8 +336,7 @@ void BufferCore::Impl::lookupHandles(FrameHandle target, FrameHandle source, std
   }
   const LookupFailure failure = lookup(target.id, source.id, stamp, &value);
   if (failure) {
-    raise(failure,
-          lookupWhat(std::string(nameOf(target.id)), std::string(nameOf(source.id))));
+    raise(failure, lookupWhat(std::string(nameOf(target.id)), std::string(nameOf(source.id))));
   }
 }
 
@@ -375,7 +378,8 @@ TransformStamped BufferCore::lookupTransform(const std::string& target, TimePoin
   if (failure) impl_->raise(failure, lookupWhat(fixed, source));
   failure = impl_->lookup(target_id, fixed_id, target_stamp, &target_T_fixed);
   if (failure) impl_->raise(failure, lookupWhat(target, fixed));
-  return impl_->stamped(target_id, source_id, target_stamp, target_T_fixed * fixed_T_source);
+  return impl_->stamped(target_id, source_id, target_stamp,
+                        detail::composed(target_T_fixed, fixed_T_source));
 }
 
 bool BufferCore::canTransform(const std::string& target, const std::string& source, TimePoint time,
@@ -502,8 +506,8 @@ std::vector<std::string> BufferCore::getFrameChain(const std::string& target,
   std::int64_t stamp = toUtime(time);
   if (!failure && stamp == 0) failure = impl_->latestCommonTime(target_id, source_id, stamp);
   if (!failure) {
-    failure =
-        impl_->walk(target_id, source_id, stamp, up_from_source, up_from_target, &ancestor, true);
+    failure = impl_->walk(target_id, source_id, stamp, up_from_source, up_from_target, &ancestor,
+                          Steps::kEdgeByEdge);
   }
   if (failure) impl_->raise(failure, "frame chain from '" + source + "' to '" + target + "'");
   std::vector<std::string> chain;

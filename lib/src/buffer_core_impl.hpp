@@ -33,17 +33,36 @@ struct FrameRecord {
   Transform static_top_T_frame;
 };
 
-/// A step on a lookup's path: one dynamic edge, or a static edge or chain of them.
+/// What anchors the samples of the edges into `frame` (see TimeCache::reanchor): the static
+/// chain above it, or null when there is none.
+inline const Transform* anchorOf(const std::vector<FrameRecord>& frames, FrameId frame) {
+  const FrameRecord& record = frames[frame];
+  return record.static_top != frame ? &record.static_top_T_frame : nullptr;
+}
+
+/// A step on a lookup's path: one dynamic edge (with the static chain above its parent when
+/// `anchored`), or a static edge or chain of them.
 struct PathEdge {
   FrameId child = kNoFrame;
   FrameId parent = kNoFrame;
+  FrameId next = kNoFrame;  // where the step ends
+  bool anchored = false;
   detail::SampleStatus status = detail::SampleStatus::kOk;
   const Transform* fixed = nullptr;  // the value of a static step
   detail::SampleSpan span;           // the samples of a dynamic edge
   std::size_t hint = detail::TimeCache::kNoHint;
   const Transform* value = nullptr;  // the step's value, once known
   bool isDynamic() const { return fixed == nullptr; }
+  /// Makes an anchored step end at the edge's parent.
+  void dropAnchor() {
+    anchored = false;
+    next = parent;
+  }
 };
+
+/// How a walk steps up the tree: to sample the values (static chains in one step, and the
+/// samples loaded early), only to check that the values exist, or edge by edge.
+enum class Steps { kSampled, kChecked, kEdgeByEdge };
 
 /// Why a lookup failed, kept as plain data so a successful lookup pays nothing for it and
 /// canTransform pays for no message it does not print.
@@ -85,8 +104,7 @@ class BufferCore::Impl {
 
   /// target_T_source at `stamp` (0: the latest common time, written back) into `value` when
   /// given, or why not.
-  LookupFailure lookup(FrameId target, FrameId source, std::int64_t& stamp,
-                       Transform* value) const;
+  LookupFailure lookup(FrameId target, FrameId source, std::int64_t& stamp, Transform* value) const;
   /// lookup() between two handles; throws when either is foreign or the lookup fails.
   void lookupHandles(FrameHandle target, FrameHandle source, std::int64_t& stamp,
                      Transform& value) const;
@@ -98,12 +116,14 @@ class BufferCore::Impl {
   }
   LookupFailure latestCommonTime(FrameId target, FrameId source, std::int64_t& stamp) const;
   /// The steps from each frame up to their common ancestor at `stamp` (0: the tree as of each
-  /// edge's newest sample); with `whole_chains`, chains of static edges step edge by edge.
+  /// edge's newest sample).
   LookupFailure walk(FrameId target, FrameId source, std::int64_t stamp,
                      std::vector<PathEdge>& source_edges, std::vector<PathEdge>& target_edges,
-                     FrameId* ancestor, bool whole_chains = false) const;
-  /// Recomputes every frame's static_top after a static edge changed (exclusive lock).
+                     FrameId* ancestor, Steps steps = Steps::kSampled) const;
+  /// Recomputes every frame's static_top after a static edge changed, and the anchored samples
+  /// of the edges into frames whose chain changed (exclusive lock).
   void updateStaticChains();
+  void computeStaticChains();
   /// The stamps [oldest, newest] at which every dynamic edge between the frames has data, with
   /// the tree as it stands at its newest samples; both zero when every edge is static.
   LookupFailure commonTimeRange(FrameId target, FrameId source, std::int64_t& oldest,

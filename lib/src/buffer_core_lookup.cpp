@@ -3,11 +3,14 @@
 
 #include "batch_interpolation.hpp"
 #include "buffer_core_impl.hpp"
+#include "compose.hpp"
 
 namespace lcmtf {
 
 namespace {
 
+using detail::composeOnto;
+using detail::rotated;
 using detail::SampleStatus;
 
 // Per-thread scratch, so that a lookup allocates nothing once warm.
@@ -43,31 +46,34 @@ std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId st
 namespace {
 
 // The next step up from `frame`: a whole static chain when allowed, else its own edge.
-// Sets edge.parent to kNoFrame at a root.
-void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t stamp,
-            bool whole_chains, PathEdge& edge) {
+// Sets edge.next to kNoFrame at a root.
+void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t stamp, Steps steps,
+            PathEdge& edge) {
+  const bool whole_chains = steps == Steps::kEdgeByEdge;
   const FrameRecord& record = frames[frame];
   edge.child = frame;
   edge.status = SampleStatus::kOk;
+  edge.anchored = false;
   if (!whole_chains && record.static_top != frame) {
-    edge.parent = record.static_top;
+    edge.parent = edge.next = record.static_top;
     edge.fixed = &record.static_top_T_frame;
     return;
   }
   const detail::TimeCache& cache = record.cache;
   if (cache.isStatic()) {
-    edge.parent = cache.staticValue().parent;
+    edge.parent = edge.next = cache.staticValue().parent;
     edge.fixed = &cache.staticValue().transform;
     return;
   }
   edge.fixed = nullptr;
-  if (stamp == 0) {
-    edge.parent = cache.newestParent();
-  } else {
-    edge.parent = cache.parentAt(stamp, edge.status);
-    // Loading the samples now gives the loads the rest of the walk to complete.
-    edge.hint = cache.prefetch(stamp);
+  edge.parent = stamp == 0 ? cache.newestParent() : cache.parentAt(stamp, edge.status);
+  edge.next = edge.parent;
+  if (!whole_chains && edge.parent != kNoFrame) {
+    edge.next = frames[edge.parent].static_top;
+    edge.anchored = edge.next != edge.parent;
   }
+  // Loading the samples now gives the loads the rest of the walk to complete.
+  if (stamp != 0 && steps == Steps::kSampled) edge.hint = cache.prefetch(stamp, edge.anchored);
 }
 
 // Sets each step's value; the dynamic edges between two samples are interpolated together.
@@ -94,33 +100,54 @@ void settleValues(WalkScratch& s) {
   detail::interpolateBatch(s.tasks.data(), s.tasks.size());
 }
 
-// q v q*, written out so that it inlines into the loop below (Eigen's own call does not).
-inline Eigen::Vector3d rotated(const Eigen::Quaterniond& q, const Eigen::Vector3d& v) {
-  const Eigen::Vector3d twice_cross = 2.0 * q.vec().cross(v);
-  return v + q.w() * twice_cross + q.vec().cross(twice_cross);
-}
+// The steps' values from first to last (bottom step first), composed: top_T_bottom.
+struct ChainProduct {
+  const PathEdge* first;
+  std::size_t count;
+  Transform value;
+};
 
-// The product of the steps' values, top step first: ancestor_T_frame.
-Transform composeUp(const std::vector<PathEdge>& edges) {
-  if (edges.empty()) return Transform::identity();
-  Transform ancestor_T_frame = *edges.front().value;
-  for (auto edge = edges.begin() + 1; edge != edges.end(); ++edge) {
-    const Transform& step = *edge->value;
-    ancestor_T_frame.translation =
-        rotated(step.rotation, ancestor_T_frame.translation) + step.translation;
-    ancestor_T_frame.rotation = step.rotation * ancestor_T_frame.rotation;
+// Each path's lower and upper halves are four independent chains of products, composed in
+// one loop so that their long dependent arithmetic overlaps; the halves are joined after.
+Transform composePath(const std::vector<PathEdge>& source_edges,
+                      const std::vector<PathEdge>& target_edges) {
+  const std::size_t source_low = source_edges.size() / 2;
+  const std::size_t target_low = target_edges.size() / 2;
+  ChainProduct chains[4] = {
+      {source_edges.data(), source_low, Transform::identity()},
+      {source_edges.data() + source_low, source_edges.size() - source_low, Transform::identity()},
+      {target_edges.data(), target_low, Transform::identity()},
+      {target_edges.data() + target_low, target_edges.size() - target_low, Transform::identity()}};
+  const std::size_t longest =
+      std::max(source_edges.size() - source_low, target_edges.size() - target_low);
+  for (std::size_t i = 0; i < longest; ++i) {
+    for (ChainProduct& chain : chains) {
+      if (i < chain.count) composeOnto(*chain.first[i].value, chain.value);
+    }
   }
-  return ancestor_T_frame;
+  composeOnto(chains[1].value, chains[0].value);
+  composeOnto(chains[3].value, chains[2].value);
+  const Transform& ancestor_T_source = chains[0].value;
+  const Transform& ancestor_T_target = chains[2].value;
+  // target_T_ancestor * ancestor_T_source, without forming the inverse.
+  const Eigen::Quaterniond target_R_ancestor = ancestor_T_target.rotation.conjugate();
+  return Transform(
+      rotated(target_R_ancestor, ancestor_T_source.translation - ancestor_T_target.translation),
+      target_R_ancestor * ancestor_T_source.rotation);
 }
 
-// The first dynamic edge without data at `stamp` as a failure; fills the spans otherwise.
+// The first dynamic edge without data at `stamp` as a failure; fills the spans otherwise,
+// unless `check_only` (the walk at `stamp` has found whether each edge has data there).
 // A span whose parent is not the one the walk used means the tree was different at `stamp`.
 LookupFailure sampleEdges(const std::vector<FrameRecord>& frames, std::vector<PathEdge>& edges,
-                          std::int64_t stamp, bool* parent_changed) {
+                          std::int64_t stamp, bool* parent_changed, bool check_only = false) {
   for (PathEdge& edge : edges) {
     if (!edge.isDynamic()) continue;
     const detail::TimeCache& cache = frames[edge.child].cache;
-    if (edge.status == SampleStatus::kOk) edge.status = cache.find(stamp, edge.span, edge.hint);
+    if (edge.status == SampleStatus::kOk && check_only) continue;
+    if (edge.status == SampleStatus::kOk) {
+      edge.status = cache.find(stamp, edge.span, edge.hint, edge.anchored);
+    }
     if (edge.status == SampleStatus::kOk) {
       if (parent_changed && edge.span.parent != edge.parent) *parent_changed = true;
       continue;
@@ -160,7 +187,7 @@ std::int64_t commonNewest(const std::vector<FrameRecord>& frames,
 LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_t stamp,
                                      std::vector<PathEdge>& source_edges,
                                      std::vector<PathEdge>& target_edges, FrameId* ancestor,
-                                     bool whole_chains) const {
+                                     Steps steps) const {
   WalkScratch& s = scratch;
   if (s.visit_epoch.size() < frames_.size()) {
     s.visit_epoch.resize(frames_.size(), 0);
@@ -180,9 +207,11 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
     return failure;
   };
 
-  // Every frame the source's walk lands on is marked with its place in the walk. Static
-  // chains are crossed in one step, so the target's walk may first meet the source's above
-  // their true common ancestor, but only by static edges, which cancel out when composed.
+  // Every frame the source's walk lands on is marked with its place in the walk, and so is the
+  // parent of each anchored step, as reached by that step without its anchor. Static chains
+  // are crossed in one step, so the target's walk may first meet the source's above their
+  // true common ancestor, but only by static edges, which cancel out when composed.
+  constexpr std::uint32_t kUnanchored = std::uint32_t{1} << 31;
   FrameId frame = source;
   FrameId source_root = source;
   for (std::size_t depth = 0;; ++depth) {
@@ -195,26 +224,38 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
     }
     // Filled in place: a copy of a freshly written edge would stall on store forwarding.
     PathEdge& edge = source_edges.emplace_back();
-    stepUp(frames_, frame, stamp, whole_chains, edge);
-    if (edge.parent == kNoFrame) {
+    stepUp(frames_, frame, stamp, steps, edge);
+    if (edge.next == kNoFrame) {
       source_edges.pop_back();
       source_root = frame;
       break;
     }
-    frame = edge.parent;
+    if (edge.anchored) {
+      if (edge.parent == target) {
+        edge.dropAnchor();
+        *ancestor = target;
+        return {};
+      }
+      s.visit_epoch[edge.parent] = epoch;
+      s.visit_index[edge.parent] = static_cast<std::uint32_t>(source_edges.size()) | kUnanchored;
+    }
+    frame = edge.next;
   }
 
   frame = target;
   for (std::size_t depth = 0;; ++depth) {
     if (depth > max_depth) return loopFailure(target);
     if (s.visit_epoch[frame] == epoch) {
-      source_edges.resize(s.visit_index[frame]);
+      const std::uint32_t index = s.visit_index[frame];
+      source_edges.resize(index & ~kUnanchored);
+      if (index & kUnanchored) source_edges.back().dropAnchor();
       *ancestor = frame;
       return {};
     }
     PathEdge& edge = target_edges.emplace_back();
-    stepUp(frames_, frame, stamp, whole_chains, edge);
-    if (edge.parent == kNoFrame) {
+    stepUp(frames_, frame, stamp, steps, edge);
+    if (edge.anchored && s.visit_epoch[edge.parent] == epoch) edge.dropAnchor();
+    if (edge.next == kNoFrame) {
       target_edges.pop_back();
       LookupFailure failure;
       failure.kind = LookupFailure::Kind::kNotConnected;
@@ -225,7 +266,7 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
       failure.edge_parent = frame;
       return failure;
     }
-    frame = edge.parent;
+    frame = edge.next;
   }
 }
 
@@ -254,8 +295,13 @@ LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int6
   } else {
     FrameId ancestor = kNoFrame;
     bool parent_changed = false;
-    failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor);
-    if (!failure && stamp == 0) {
+    const bool check_only = value == nullptr && stamp != 0;
+    failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor,
+                   check_only ? Steps::kChecked : Steps::kSampled);
+    if (!failure && check_only) {
+      failure = sampleEdges(frames_, s.source_edges, stamp, nullptr, true);
+      if (!failure) failure = sampleEdges(frames_, s.target_edges, stamp, nullptr, true);
+    } else if (!failure && stamp == 0) {
       // The tree as of each edge's newest sample gives the latest common time; if an edge had
       // another parent at that time, walk the tree as it was then.
       stamp = commonNewest(frames_, s.source_edges, s.target_edges);
@@ -282,10 +328,7 @@ LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int6
       *value = Transform::identity();
     } else {
       settleValues(s);
-      const Transform ancestor_T_source = composeUp(s.source_edges);
-      *value = s.target_edges.empty()
-                   ? ancestor_T_source
-                   : composeUp(s.target_edges).inverse() * ancestor_T_source;
+      *value = composePath(s.source_edges, s.target_edges);
     }
   }
   return {};
@@ -316,6 +359,35 @@ LookupFailure BufferCore::Impl::resolveAll(const std::string& target, const std:
 }
 
 void BufferCore::Impl::updateStaticChains() {
+  struct Chain {
+    FrameId top;
+    Transform top_T_frame;
+  };
+  std::vector<Chain> before;
+  before.reserve(frames_.size());
+  for (const FrameRecord& record : frames_) {
+    before.push_back({record.static_top, record.static_top_T_frame});
+  }
+  computeStaticChains();
+  // Edges into a frame whose chain changed hold samples anchored to the old chain.
+  std::vector<char> changed(frames_.size(), 0);
+  for (FrameId frame = 1; frame < frames_.size(); ++frame) {
+    const FrameRecord& record = frames_[frame];
+    const Chain& old = before[frame];
+    changed[frame] =
+        old.top != record.static_top ||
+        old.top_T_frame.translation != record.static_top_T_frame.translation ||
+        old.top_T_frame.rotation.coeffs() != record.static_top_T_frame.rotation.coeffs();
+  }
+  auto anchor = [this](FrameId parent) { return anchorOf(frames_, parent); };
+  for (FrameRecord& record : frames_) {
+    detail::TimeCache& cache = record.cache;
+    if (cache.isStatic() || cache.empty()) continue;
+    if (!cache.hasSingleParent() || changed[cache.newestParent()]) cache.reanchor(anchor);
+  }
+}
+
+void BufferCore::Impl::computeStaticChains() {
   // Memoized climb: a frame's top is its static parent's top, found before the frame itself.
   constexpr FrameId kUnknown = static_cast<FrameId>(-1);
   for (FrameRecord& record : frames_) record.static_top = kUnknown;

@@ -19,7 +19,10 @@ class FrameNameIndex {
     for (std::size_t i = hash & mask_;; i = (i + 1) & mask_) {
       const Slot& slot = slots_[i];
       if (slot.id == kNoFrame) return kNoFrame;
-      if (slot.hash == hash && slot.name == name) return slot.id;
+      if (slot.hash == hash && slot.name.size() == name.size() &&
+          sameBytes(slot.name.data(), name.data(), name.size())) {
+        return slot.id;
+      }
     }
   }
 
@@ -29,26 +32,52 @@ class FrameNameIndex {
     ++count_;
   }
 
+  // Independent multiplies of 8-byte words (the last one overlapping the one before, so no
+  // word is read byte by byte), so that a name's words mix at once rather than in sequence.
   static std::uint64_t hashOf(std::string_view name) {
     constexpr std::uint64_t kMultiplier = 0x9e3779b97f4a7c15ull;
-    std::uint64_t hash = name.size() * kMultiplier;
-    std::size_t offset = 0;
-    for (; offset + 8 <= name.size(); offset += 8) {
-      std::uint64_t chunk;
-      std::memcpy(&chunk, name.data() + offset, 8);
-      hash = (hash ^ chunk) * kMultiplier;
-      hash ^= hash >> 29;
+    constexpr std::uint64_t kSeed = 0xa0761d6478bd642full;
+    const std::size_t size = name.size();
+    std::uint64_t hash = size * kMultiplier;
+    if (size < 8) return finish(hash + mix(tail(name.data(), size), kSeed));
+    // Each word's seed depends on its place, so that words trading places change the hash.
+    for (std::size_t offset = 0; offset + 8 < size; offset += 8) {
+      hash += mix(word(name.data() + offset), kSeed + offset * kMultiplier);
     }
-    if (offset < name.size()) {
-      std::uint64_t chunk = 0;
-      std::memcpy(&chunk, name.data() + offset, name.size() - offset);
-      hash = (hash ^ chunk) * kMultiplier;
+    return finish(hash + mix(word(name.data() + size - 8), ~kSeed));
+  }
+
+  /// Equality of two names of equal size, inline: names are short, and a call to memcmp costs
+  /// more than comparing them.
+  static bool sameBytes(const char* a, const char* b, std::size_t size) {
+    if (size < 8) return tail(a, size) == tail(b, size);
+    std::uint64_t differ = 0;
+    for (std::size_t offset = 0; offset + 8 < size; offset += 8) {
+      differ |= word(a + offset) ^ word(b + offset);
     }
-    hash ^= hash >> 32;
-    return hash * kMultiplier;
+    return (differ | (word(a + size - 8) ^ word(b + size - 8))) == 0;
   }
 
  private:
+  static std::uint64_t word(const char* bytes) {
+    std::uint64_t value;
+    std::memcpy(&value, bytes, 8);
+    return value;
+  }
+  static std::uint64_t tail(const char* bytes, std::size_t size) {
+    std::uint64_t value = 0;
+    std::memcpy(&value, bytes, size);
+    return value;
+  }
+  static std::uint64_t finish(std::uint64_t hash) {
+    hash = (hash ^ (hash >> 32)) * 0xbf58476d1ce4e5b9ull;
+    return hash ^ (hash >> 31);
+  }
+  static std::uint64_t mix(std::uint64_t word, std::uint64_t seed) {
+    const std::uint64_t product = (word ^ seed) * 0x9e3779b97f4a7c15ull;
+    return product ^ (product >> 29);
+  }
+
   struct Slot {
     std::uint64_t hash = 0;
     std::string_view name;

@@ -2,12 +2,16 @@
 
 #include <algorithm>
 
+#include "compose.hpp"
+
 namespace lcmtf::detail {
 
 void TimeCache::setStatic(FrameId parent, const Transform& transform) {
   stamps_.clear();
   parents_.clear();
   transforms_.clear();
+  anchored_.clear();
+  anchoring_ = false;
   static_value_ = EdgeValue{parent, transform};
   mask_ = 0;
   head_ = 0;
@@ -41,21 +45,36 @@ void TimeCache::refreshEnds() {
   oldest_parent_ = parentOf(0);
   newest_stamp_ = stampAt(count_ - 1);
   newest_parent_ = parentOf(count_ - 1);
-  samples_per_utime_ = newest_stamp_ > oldest_stamp_
-                           ? static_cast<double>(count_ - 1) /
-                                 static_cast<double>(newest_stamp_ - oldest_stamp_)
-                           : 0.0;
+  samples_per_utime_ =
+      newest_stamp_ > oldest_stamp_
+          ? static_cast<double>(count_ - 1) / static_cast<double>(newest_stamp_ - oldest_stamp_)
+          : 0.0;
 }
 
 void TimeCache::put(std::size_t index, std::int64_t stamp, FrameId parent,
-                    const Transform& transform) {
-  stamps_[slot(index)] = stamp;
-  parents_[slot(index)] = parent;
-  transforms_[slot(index)] = transform;
+                    const Transform& transform, const Transform* anchor_T_parent) {
+  const std::size_t at = slot(index);
+  stamps_[at] = stamp;
+  parents_[at] = parent;
+  transforms_.store(at, transform);
+  if (anchoring_)
+    anchored_.store(at, anchor_T_parent ? composed(*anchor_T_parent, transform) : transform);
 }
 
 void TimeCache::move(std::size_t from, std::size_t to) {
-  put(to, stampAt(from), parentOf(from), transformAt(from));
+  const std::size_t source = slot(from);
+  const std::size_t destination = slot(to);
+  stamps_[destination] = stamps_[source];
+  parents_[destination] = parents_[source];
+  transforms_.store(destination, transforms_[source]);
+  if (anchoring_) anchored_.store(destination, anchored_[source]);
+}
+
+// Until now every anchor was the identity: each anchored value is the sample itself.
+void TimeCache::startAnchoring() {
+  anchoring_ = true;
+  TransformRing(transforms_.size()).swap(anchored_);
+  for (std::size_t i = 0; i < count_; ++i) anchored_.store(slot(i), transformAt(i));
 }
 
 void TimeCache::noteParentChanges(std::size_t index) {
@@ -81,32 +100,37 @@ void TimeCache::grow(std::int64_t cache_time) {
     const double with_margin = std::min(window_samples + 16.0, double(kLargestJump));
     while (static_cast<double>(wanted) < with_margin) wanted *= 2;
   }
-  std::vector<std::int64_t> stamps(wanted);
-  std::vector<FrameId> parents(wanted);
-  std::vector<Transform, CacheLineAllocator<Transform>> transforms(wanted);
+  UnfilledArray<std::int64_t> stamps(wanted);
+  UnfilledArray<FrameId> parents(wanted);
+  TransformRing transforms(wanted);
+  TransformRing anchored(anchoring_ ? wanted : 0);
   for (std::size_t i = 0; i < count_; ++i) {
     stamps[i] = stampAt(i);
     parents[i] = parentOf(i);
-    transforms[i] = transformAt(i);
+    transforms.store(i, transformAt(i));
+    if (anchoring_) anchored.store(i, anchored_[slot(i)]);
   }
   stamps_.swap(stamps);
   parents_.swap(parents);
   transforms_.swap(transforms);
+  anchored_.swap(anchored);
   mask_ = wanted - 1;
   head_ = 0;
 }
 
-InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_time) {
+InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_time,
+                                const Transform* anchor_T_parent) {
   if (is_static_) {
     mask_ = 0;
     count_ = 0;
     is_static_ = false;
   }
   if (isTooOld(sample.stamp, cache_time)) return InsertOutcome::kTooOld;
+  if (anchor_T_parent && !anchoring_) startAnchoring();
   if (count_ > 0 && sample.stamp <= newest_stamp_) {
     const std::size_t index = indexAtOrBefore(sample.stamp);
     if (index < count_ && stampAt(index) == sample.stamp) {
-      put(index, sample.stamp, sample.parent, sample.transform);
+      put(index, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
       noteParentChanges(index);
       refreshEnds();
       return InsertOutcome::kReplaced;
@@ -115,14 +139,14 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     // Shift the samples newer than `sample` one place towards the back.
     const std::size_t insert_at = index < count_ ? index + 1 : 0;
     for (std::size_t i = count_; i > insert_at; --i) move(i - 1, i);
-    put(insert_at, sample.stamp, sample.parent, sample.transform);
+    put(insert_at, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
     ++count_;
     noteParentChanges(insert_at);
     refreshEnds();
     return InsertOutcome::kAdded;
   }
   if (count_ == stamps_.size()) grow(cache_time);
-  put(count_, sample.stamp, sample.parent, sample.transform);
+  put(count_, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
   ++count_;
   noteParentChanges(count_ - 1);
   const std::int64_t horizon = saturatingSubtract(sample.stamp, cache_time);
@@ -138,19 +162,20 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
 // for oldest <= stamp < newest.
 std::size_t TimeCache::guessIndex(std::int64_t stamp) const {
   const std::size_t last = count_ - 1;
-  const auto guess = static_cast<std::size_t>(static_cast<double>(stamp - oldest_stamp_) *
-                                              samples_per_utime_);
+  const auto guess =
+      static_cast<std::size_t>(static_cast<double>(stamp - oldest_stamp_) * samples_per_utime_);
   return std::min(guess, last - 1);
 }
 
-std::size_t TimeCache::prefetch(std::int64_t stamp) const {
+std::size_t TimeCache::prefetch(std::int64_t stamp, bool anchored) const {
   if (is_static_ || count_ < 2 || stamp <= oldest_stamp_ || stamp >= newest_stamp_) {
     return kNoHint;
   }
   const std::size_t guess = guessIndex(stamp);
   __builtin_prefetch(&stamps_[slot(guess)]);
-  __builtin_prefetch(&transforms_[slot(guess)]);
-  __builtin_prefetch(&transforms_[slot(guess + 1)]);
+  const TransformRing& transforms = ring(anchored);
+  __builtin_prefetch(transforms.address(slot(guess)));
+  __builtin_prefetch(transforms.address(slot(guess + 1)));
   return guess;
 }
 
@@ -206,7 +231,8 @@ FrameId TimeCache::parentAt(std::int64_t stamp, SampleStatus& status) const {
   return parentOf(indexAtOrBefore(stamp));
 }
 
-SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span, std::size_t hint) const {
+SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span, std::size_t hint,
+                             bool anchored) const {
   if (is_static_) {
     span = SampleSpan{&static_value_.transform, nullptr, 0.0, static_value_.parent};
     return SampleStatus::kOk;
@@ -217,11 +243,12 @@ SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span, std::size_t h
   const std::size_t index = indexAtOrBefore(stamp, hint);
   const std::int64_t older_stamp = stampAt(index);
   const FrameId parent = hasSingleParent() ? newest_parent_ : parentOf(index);
+  const TransformRing& transforms = ring(anchored);
   if (older_stamp == stamp || (!hasSingleParent() && parentOf(index + 1) != parent)) {
-    span = SampleSpan{&transformAt(index), nullptr, 0.0, parent};
+    span = SampleSpan{&transforms[slot(index)], nullptr, 0.0, parent};
     return SampleStatus::kOk;
   }
-  span = SampleSpan{&transformAt(index), &transformAt(index + 1),
+  span = SampleSpan{&transforms[slot(index)], &transforms[slot(index + 1)],
                     static_cast<double>(stamp - older_stamp) /
                         static_cast<double>(stampAt(index + 1) - older_stamp),
                     parent};

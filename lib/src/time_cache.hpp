@@ -2,10 +2,10 @@
 
 #include <cstdint>
 #include <limits>
-#include <vector>
 
-#include "cache_line_allocator.hpp"
 #include "lcmtf/transform.hpp"
+#include "transform_ring.hpp"
+#include "unfilled_array.hpp"
 
 namespace lcmtf::detail {
 
@@ -61,7 +61,17 @@ class TimeCache {
   void setStatic(FrameId parent, const Transform& transform);
   /// Adds a sample in time order (the edge becomes dynamic), pruning samples older than
   /// `cache_time` behind the newest; a sample already older than that window is refused.
-  InsertOutcome insert(const EdgeSample& sample, std::int64_t cache_time);
+  /// `anchor_T_parent` is the transform that anchors the sample (see reanchor()), or null for
+  /// the identity.
+  InsertOutcome insert(const EdgeSample& sample, std::int64_t cache_time,
+                       const Transform* anchor_T_parent = nullptr);
+  /// Recomputes each sample's anchored value, anchorOf(parent) * transform, where
+  /// anchorOf(parent) gives a const Transform* (null for the identity). Lookups use anchored
+  /// values to cross the static edges above the parent in the same step as this edge.
+  template <class AnchorOf>
+  void reanchor(AnchorOf anchorOf);
+  /// Whether every sample kept has the same parent.
+  bool hasSingleParent() const { return parent_changed_at_ <= oldest_stamp_; }
   /// Whether insert() would refuse a sample at `stamp` as older than the history kept.
   bool isTooOld(std::int64_t stamp, std::int64_t cache_time) const {
     return !is_static_ && count_ > 0 && stamp < saturatingSubtract(newest_stamp_, cache_time);
@@ -77,13 +87,15 @@ class TimeCache {
 
   /// The samples that give the edge's value at `stamp` (any stamp for a static edge).
   /// `hint` is prefetch()'s answer for the same stamp, when the caller has it.
-  SampleStatus find(std::int64_t stamp, SampleSpan& span, std::size_t hint = kNoHint) const;
+  /// With `anchored`, the span points at anchored values.
+  SampleStatus find(std::int64_t stamp, SampleSpan& span, std::size_t hint = kNoHint,
+                    bool anchored = false) const;
   /// The parent at `stamp`, whether or not the edge has data there (then its nearest sample's
   /// parent), with the status find() would give; kNoFrame when the edge is empty.
   FrameId parentAt(std::int64_t stamp, SampleStatus& status) const;
   /// Starts loading the samples find(stamp) will read, so several edges load at once; returns
   /// where it guessed they are, as a hint for find().
-  std::size_t prefetch(std::int64_t stamp) const;
+  std::size_t prefetch(std::int64_t stamp, bool anchored = false) const;
   static constexpr std::size_t kNoHint = static_cast<std::size_t>(-1);
 
  private:
@@ -91,18 +103,25 @@ class TimeCache {
   std::int64_t stampAt(std::size_t index) const { return stamps_[slot(index)]; }
   FrameId parentOf(std::size_t index) const { return parents_[slot(index)]; }
   const Transform& transformAt(std::size_t index) const { return transforms_[slot(index)]; }
-  void put(std::size_t index, std::int64_t stamp, FrameId parent, const Transform& transform);
+  const TransformRing& ring(bool anchored) const {
+    return anchored && anchoring_ ? anchored_ : transforms_;
+  }
+  void put(std::size_t index, std::int64_t stamp, FrameId parent, const Transform& transform,
+           const Transform* anchor_T_parent);
+  void startAnchoring();
   void move(std::size_t from, std::size_t to);
   std::size_t indexAtOrBefore(std::int64_t stamp, std::size_t hint = kNoHint) const;
   std::size_t guessIndex(std::int64_t stamp) const;
   void grow(std::int64_t cache_time);
   void noteParentChanges(std::size_t index);
   void refreshEnds();
-  bool hasSingleParent() const { return parent_changed_at_ <= oldest_stamp_; }
 
-  std::vector<std::int64_t> stamps_;
-  std::vector<FrameId> parents_;
-  std::vector<Transform, CacheLineAllocator<Transform>> transforms_;
+  UnfilledArray<std::int64_t> stamps_;
+  UnfilledArray<FrameId> parents_;
+  TransformRing transforms_;
+  // In use only once some sample's anchor is not the identity.
+  TransformRing anchored_;
+  bool anchoring_ = false;
   EdgeValue static_value_;
   std::size_t mask_ = 0;
   std::size_t head_ = 0;
@@ -118,5 +137,22 @@ class TimeCache {
   FrameId newest_parent_ = kNoFrame;
   double samples_per_utime_ = 0.0;  // (count - 1) / (newest - oldest), for guessIndex()
 };
+
+template <class AnchorOf>
+void TimeCache::reanchor(AnchorOf anchorOf) {
+  if (is_static_) return;
+  bool any = false;
+  for (std::size_t i = 0; i < count_ && !any; ++i) any = anchorOf(parentOf(i)) != nullptr;
+  anchoring_ = any;
+  if (!any) {
+    anchored_.clear();
+    return;
+  }
+  if (anchored_.size() != transforms_.size()) TransformRing(transforms_.size()).swap(anchored_);
+  for (std::size_t i = 0; i < count_; ++i) {
+    const Transform* anchor_T_parent = anchorOf(parentOf(i));
+    anchored_.store(slot(i), anchor_T_parent ? *anchor_T_parent * transformAt(i) : transformAt(i));
+  }
+}
 
 }  // namespace lcmtf::detail
