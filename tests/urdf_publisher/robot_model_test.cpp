@@ -188,7 +188,7 @@ TEST(RobotModel, XmlErrorIsRefusedNamingTheFileAndTheProblem) {
   EXPECT_EQ(refusal(std::string("\x7f"
                                 "ELF\x02\x01",
                                 6)),
-            "test.urdf: not XML: a URDF starts with '<', this starts with '.ELF..'");
+            "test.urdf: not XML: a URDF starts with '<', this starts with '\\x7fELF\\x02\\x01'");
   EXPECT_THAT(refusal("<html/>"), HasSubstr("Could not find the 'robot' element"));
 }
 

@@ -40,10 +40,8 @@ std::string describeLoop(const std::map<std::string, Edge>& parent_of, const std
 
 }  // namespace
 
-void refuseJointLoops(const std::string& urdf, const std::string& source) {
-  TiXmlDocument document;
-  document.Parse(urdf.c_str());
-  const TiXmlElement* robot = document.Error() ? nullptr : document.FirstChildElement("robot");
+void refuseJointLoops(const TiXmlDocument& urdf, const std::string& source) {
+  const TiXmlElement* robot = urdf.Error() ? nullptr : urdf.FirstChildElement("robot");
   if (!robot) return;
 
   std::map<std::string, Edge> parent_of;

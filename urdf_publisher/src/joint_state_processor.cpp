@@ -238,8 +238,7 @@ class JointStateProcessor::Impl {
   // multiplier) made it non-finite.
   bool append(std::size_t& k, const Output& output, double position, std::int64_t stamp) {
     const Transform parent_T_child = parentTChild(output.joint, position);
-    if (!std::isfinite(position) || !parent_T_child.translation.allFinite() ||
-        !parent_T_child.rotation.coeffs().allFinite()) {
+    if (!parent_T_child.translation.allFinite() || !parent_T_child.rotation.coeffs().allFinite()) {
       reportNonFinite(output.joint.name, position);
       return false;
     }

@@ -36,8 +36,9 @@ std::mutex& consoleBridgeMutex() {
   if (urdf.find_first_not_of(" \t\r\n") == std::string::npos) {
     throw UrdfError(source + ": the robot description is empty");
   }
-  refuseMalformedXml(urdf, source);
-  refuseJointLoops(urdf, source);
+  TiXmlDocument document;
+  parseXmlOrRefuse(urdf, source, document);
+  refuseJointLoops(document, source);
   CollectedErrors collected;
   ::urdf::ModelInterfaceSharedPtr model;
   std::string exception;

@@ -1,29 +1,23 @@
 #include "xml_syntax.hpp"
 
-#include <tinyxml.h>
+#include <algorithm>
 
-#include <cctype>
-
+#include "lcmtf/printable.hpp"
 #include "lcmtf_urdf/robot_model.hpp"
 
 namespace lcmtf::urdf {
 
 namespace {
 
-// The first characters of the text, printable, to show what was given instead of XML.
+// The first characters of the text's first line, to show what was given instead of XML.
 std::string opening(const std::string& text, std::size_t from) {
-  std::string shown;
-  for (std::size_t i = from; i < text.size() && shown.size() < 24; ++i) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    if (c == '\n' || c == '\r') break;
-    shown += std::isprint(c) ? static_cast<char>(c) : '.';
-  }
-  return shown;
+  const std::size_t end = std::min({text.find_first_of("\r\n", from), text.size(), from + 24});
+  return printable(std::string_view(text).substr(from, end - from));
 }
 
 }  // namespace
 
-void refuseMalformedXml(const std::string& text, const std::string& source) {
+void parseXmlOrRefuse(const std::string& text, const std::string& source, TiXmlDocument& document) {
   std::size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
   start = text.find_first_not_of(" \t\r\n", start);
   if (start == std::string::npos) return;
@@ -31,7 +25,6 @@ void refuseMalformedXml(const std::string& text, const std::string& source) {
     throw UrdfError(source + ": not XML: a URDF starts with '<', this starts with '" +
                     opening(text, start) + "'");
   }
-  TiXmlDocument document;
   document.Parse(text.c_str());
   if (!document.Error()) return;
   std::string where;
