@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "compose.hpp"
-
 namespace lcmtf::detail {
 
 void TimeCache::setStatic(FrameId parent, const Transform& transform) {
@@ -57,8 +55,7 @@ void TimeCache::put(std::size_t index, std::int64_t stamp, FrameId parent,
   stamps_[at] = stamp;
   parents_[at] = parent;
   transforms_.store(at, transform);
-  if (anchoring_)
-    anchored_.store(at, anchor_T_parent ? composed(*anchor_T_parent, transform) : transform);
+  if (anchoring_) anchored_.store(at, anchoredValue(anchor_T_parent, transform));
 }
 
 void TimeCache::move(std::size_t from, std::size_t to) {

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "compose.hpp"
 #include "lcmtf/transform.hpp"
 #include "transform_ring.hpp"
 #include "unfilled_array.hpp"
@@ -108,6 +109,11 @@ class TimeCache {
   }
   void put(std::size_t index, std::int64_t stamp, FrameId parent, const Transform& transform,
            const Transform* anchor_T_parent);
+  /// A sample's anchored value: anchor_T_parent * parent_T_child, or the sample for no anchor.
+  static Transform anchoredValue(const Transform* anchor_T_parent,
+                                 const Transform& parent_T_child) {
+    return anchor_T_parent ? composed(*anchor_T_parent, parent_T_child) : parent_T_child;
+  }
   void startAnchoring();
   void move(std::size_t from, std::size_t to);
   std::size_t indexAtOrBefore(std::int64_t stamp, std::size_t hint = kNoHint) const;
@@ -150,8 +156,7 @@ void TimeCache::reanchor(AnchorOf anchorOf) {
   }
   if (anchored_.size() != transforms_.size()) TransformRing(transforms_.size()).swap(anchored_);
   for (std::size_t i = 0; i < count_; ++i) {
-    const Transform* anchor_T_parent = anchorOf(parentOf(i));
-    anchored_.store(slot(i), anchor_T_parent ? *anchor_T_parent * transformAt(i) : transformAt(i));
+    anchored_.store(slot(i), anchoredValue(anchorOf(parentOf(i)), transformAt(i)));
   }
 }
 

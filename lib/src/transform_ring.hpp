@@ -1,12 +1,11 @@
 #pragma once
 
 #include <cstddef>
-#include <memory>
 #include <new>
 #include <type_traits>
-#include <utility>
 
 #include "lcmtf/transform.hpp"
+#include "unfilled_array.hpp"
 
 namespace lcmtf::detail {
 
@@ -16,9 +15,9 @@ namespace lcmtf::detail {
 class TransformRing {
  public:
   TransformRing() = default;
-  explicit TransformRing(std::size_t size) : slots_(new Slot[size]), size_(size) {}
+  explicit TransformRing(std::size_t size) : slots_(size) {}
 
-  std::size_t size() const { return size_; }
+  std::size_t size() const { return slots_.size(); }
   /// The transform last stored in slot `index`; only stored slots may be read.
   const Transform& operator[](std::size_t index) const {
     return *std::launder(reinterpret_cast<const Transform*>(slots_[index].bytes));
@@ -28,14 +27,8 @@ class TransformRing {
   }
   /// Where slot `index` is, to prefetch.
   const void* address(std::size_t index) const { return slots_[index].bytes; }
-  void swap(TransformRing& other) noexcept {
-    slots_.swap(other.slots_);
-    std::swap(size_, other.size_);
-  }
-  void clear() {
-    slots_.reset();
-    size_ = 0;
-  }
+  void swap(TransformRing& other) noexcept { slots_.swap(other.slots_); }
+  void clear() { slots_.clear(); }
 
  private:
   static_assert(std::is_trivially_destructible_v<Transform>);
@@ -43,8 +36,7 @@ class TransformRing {
     unsigned char bytes[sizeof(Transform)];
   };
 
-  std::unique_ptr<Slot[]> slots_;
-  std::size_t size_ = 0;
+  UnfilledArray<Slot> slots_;
 };
 
 }  // namespace lcmtf::detail
