@@ -87,16 +87,16 @@ class EchoLoop {
       const bool timed_out =
           options_.timeout && !printed && now_steady - start >= *options_.timeout;
       if (!tick && !timed_out) continue;
-      std::string missing =
-          describeMissing(buffer_, options_.reference_frame, options_.frame, time, heardAnything());
+      std::string missing = printable(describeMissing(buffer_, options_.reference_frame,
+                                                      options_.frame, time, heardAnything()));
       if (!heardAnything()) missing += " on " + channels();
       if (timed_out) {
-        err_ << kProgram << ": gave up after " << toString(*options_.timeout) << ": "
-             << printable(missing) << std::endl;
+        err_ << kProgram << ": gave up after " << toString(*options_.timeout) << ": " << missing
+             << std::endl;
         return kExitFailure;
       }
       if (!last_waiting || now_steady - *last_waiting >= waiting_period) {
-        err_ << "Waiting: " << printable(missing) << std::endl;
+        err_ << "Waiting: " << missing << std::endl;
         last_waiting = now_steady;
       }
     }

@@ -15,6 +15,12 @@ std::string joined(const std::vector<std::string>& items) {
   return text;
 }
 
+// "most recent: <time> (<age> s old)", the age as of `heard_until`.
+std::string mostRecentLine(TimePoint time, TimePoint heard_until) {
+  return "most recent: " + toString(time) + " (" + fixedDecimals(toSeconds(heard_until - time), 3) +
+         " s old)\n";
+}
+
 // Lines joined with newlines that dotQuoted turns into Graphviz's centred line breaks.
 std::string edgeLabel(const EdgeTraffic& edge, TimePoint heard_until) {
   const bool several = edge.authorities.size() > 1;
@@ -25,14 +31,12 @@ std::string edgeLabel(const EdgeTraffic& edge, TimePoint heard_until) {
     label += edge.samples < 2 ? std::string("resent: - (heard once)\n")
                               : "resent: " + fixedDecimals(edge.rate_hz, 2) + " Hz (heard " +
                                     std::to_string(edge.samples) + " times)\n";
-    label += "most recent: " + toString(edge.last_received) + " (" +
-             fixedDecimals(toSeconds(heard_until - edge.last_received), 3) + " s old)\n";
+    label += mostRecentLine(edge.last_received, heard_until);
     return label + "buffer: one value, valid at every time";
   }
   label += edge.samples < 2 ? std::string("average rate: - (heard once)\n")
                             : "average rate: " + fixedDecimals(edge.rate_hz, 2) + " Hz\n";
-  label += "most recent: " + toString(edge.newest_stamp) + " (" +
-           fixedDecimals(toSeconds(heard_until - edge.newest_stamp), 3) + " s old)\n";
+  label += mostRecentLine(edge.newest_stamp, heard_until);
   label += "buffer: " + fixedDecimals(toSeconds(edge.newest_stamp - edge.oldest_stamp), 3) +
            " s (" + std::to_string(edge.buffered) + " samples)";
   return label;
