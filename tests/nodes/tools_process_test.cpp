@@ -46,6 +46,16 @@ std::unique_ptr<ToolProcess> publisher(
   return std::make_unique<ToolProcess>(TF_PUBLISHER_PEER_PATH, arguments);
 }
 
+// A static publisher signed 'mounts' with base -> camera a metre up; `resend_period` "0"
+// answers requests only.
+std::unique_ptr<ToolProcess> cameraMount(const std::string& url,
+                                         const std::string& resend_period = "1") {
+  return std::make_unique<ToolProcess>(
+      LCMTF_STATIC_PUBLISHER_PATH,
+      std::vector<std::string>{"--lcm-url", url, "--period", resend_period, "--authority", "mounts",
+                               "0", "0", "1", "0", "0", "0", "base", "camera"});
+}
+
 // The numbers inside the brackets after `label` on its line of the output.
 std::vector<double> numbersAfter(const std::string& text, const std::string& label) {
   const std::size_t at = text.find(label);
@@ -213,9 +223,8 @@ TEST(MonitorProcess, RatesAreWithinTenPercentAndAConflictIsShown) {
   const std::string url = testUrl();
   auto fast = publisher(url, "odometry", 50, "odom", "base");
   auto slow = publisher(url, "rogue", 10, "map", "base");
-  ToolProcess statics(LCMTF_STATIC_PUBLISHER_PATH, {"--lcm-url", url, "--authority", "mounts", "0",
-                                                    "0", "1", "0", "0", "0", "base", "camera"});
-  ASSERT_TRUE(statics.waitForStdout("Publishing", 5s));
+  auto statics = cameraMount(url);
+  ASSERT_TRUE(statics->waitForStdout("Publishing", 5s));
   ToolProcess monitor(LCMTF_MONITOR_PATH, {"--lcm-url", url, "--duration", "2"});
   ASSERT_EQ(monitor.waitForExit(15s), std::optional<int>(0)) << monitor.stderrText();
   const std::string report = monitor.stdoutText();
@@ -268,10 +277,8 @@ TEST(MonitorProcess, ShowsTheChainAndItsNetDelay) {
 
 TEST(MonitorProcess, StaticsSentOnlyInAnswerToItsRequestAreInTheReport) {
   const std::string url = testUrl();
-  ToolProcess statics(LCMTF_STATIC_PUBLISHER_PATH,
-                      {"--lcm-url", url, "--period", "0", "--authority", "mounts", "0", "0", "1",
-                       "0", "0", "0", "base", "camera"});
-  ASSERT_TRUE(statics.waitForStdout("Publishing", 5s));
+  auto statics = cameraMount(url, "0");
+  ASSERT_TRUE(statics->waitForStdout("Publishing", 5s));
   for (const bool with_chain : {false, true}) {
     std::vector<std::string> arguments{"--lcm-url", url, "--duration", "0.2"};
     if (with_chain) arguments.insert(arguments.end(), {"base", "camera"});
@@ -344,10 +351,8 @@ TEST(MonitorProcess, HostileInputIsCountedAndDescribedWhileGoodTrafficIsReported
 
 TEST(ViewFramesProcess, StaticsSentOnlyInAnswerToItsRequestAreDrawn) {
   const std::string url = testUrl();
-  ToolProcess statics(LCMTF_STATIC_PUBLISHER_PATH,
-                      {"--lcm-url", url, "--period", "0", "--authority", "mounts", "0", "0", "1",
-                       "0", "0", "0", "base", "camera"});
-  ASSERT_TRUE(statics.waitForStdout("Publishing", 5s));
+  auto statics = cameraMount(url, "0");
+  ASSERT_TRUE(statics->waitForStdout("Publishing", 5s));
   const std::filesystem::path directory = lcmtf_test::makeTemporaryDirectory("view-statics");
   const std::string output = (directory / "tree").string();
   ToolProcess view(LCMTF_VIEW_FRAMES_PATH, {"--lcm-url", url, "--wait", "0.2", "-o", output});
@@ -360,9 +365,8 @@ TEST(ViewFramesProcess, StaticsSentOnlyInAnswerToItsRequestAreDrawn) {
 TEST(ViewFramesProcess, WritesTheTreeAsDotAndDrawsItWhenGraphvizIsThere) {
   const std::string url = testUrl();
   auto odom = publisher(url, "odometry", 50, "odom", "base");
-  ToolProcess statics(LCMTF_STATIC_PUBLISHER_PATH, {"--lcm-url", url, "--authority", "mounts", "0",
-                                                    "0", "1", "0", "0", "0", "base", "camera"});
-  ASSERT_TRUE(statics.waitForStdout("Publishing", 5s));
+  auto statics = cameraMount(url);
+  ASSERT_TRUE(statics->waitForStdout("Publishing", 5s));
   const std::filesystem::path directory = lcmtf_test::makeTemporaryDirectory("view-frames");
   const std::string output = (directory / "tree").string();
   ToolProcess view(LCMTF_VIEW_FRAMES_PATH, {"--lcm-url", url, "--wait", "1.5", "-o", output});
