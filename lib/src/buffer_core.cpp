@@ -165,15 +165,20 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
         record.cache.staticValue().transform.translation == value.translation &&
         record.cache.staticValue().transform.rotation.coeffs() == value.rotation.coeffs();
     if (!unchanged) {
+      root_paths_stale_ = root_paths_stale_ || !was_static ||
+                          record.cache.staticValue().parent != parent_id;
       record.cache.setStatic(parent_id, value);
       updateStaticChains();
     }
   } else {
+    const FrameId parent_before = record.cache.newestParent();
     if (record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_,
                             anchorOf(frames_, parent_id)) == detail::InsertOutcome::kReplaced) {
       ++statistics_.replaced;
     }
     if (was_static) updateStaticChains();
+    root_paths_stale_ =
+        root_paths_stale_ || was_static || record.cache.newestParent() != parent_before;
   }
   const std::uint32_t authority_id = authorityId(authority);
   if (record.authority != 0 && record.authority != authority_id) {
@@ -198,6 +203,7 @@ std::size_t BufferCore::Impl::insert(const TransformStamped* transforms, std::si
       ExclusiveLock lock(lock_);
       if (kind == InsertRejection::kCount) {
         kind = store(*transforms, value, normalized, authority, is_static, reason);
+        refreshRootPaths();
       }
       if (kind == InsertRejection::kCount) return 1;
       ++statistics_.rejected[static_cast<std::size_t>(kind)];
@@ -239,6 +245,7 @@ std::size_t BufferCore::Impl::insert(const TransformStamped* transforms, std::si
     for (const Refusal& refusal : refusals) {
       ++statistics_.rejected[static_cast<std::size_t>(refusal.kind)];
     }
+    refreshRootPaths();
   }
   for (const Refusal& refusal : refusals) {
     reportOnce(refusal.kind, "rejected a transform: " + refusal.reason);
@@ -506,8 +513,7 @@ std::vector<std::string> BufferCore::getFrameChain(const std::string& target,
   std::int64_t stamp = toUtime(time);
   if (!failure && stamp == 0) failure = impl_->latestCommonTime(target_id, source_id, stamp);
   if (!failure) {
-    failure = impl_->walk(target_id, source_id, stamp, up_from_source, up_from_target, &ancestor,
-                          Steps::kEdgeByEdge);
+    failure = impl_->walk(target_id, source_id, stamp, up_from_source, up_from_target, &ancestor);
   }
   if (failure) impl_->raise(failure, "frame chain from '" + source + "' to '" + target + "'");
   std::vector<std::string> chain;
@@ -522,6 +528,8 @@ std::vector<std::string> BufferCore::getFrameChain(const std::string& target,
 void BufferCore::clear() {
   ExclusiveLock lock(impl_->lock_);
   for (FrameRecord& frame : impl_->frames_) frame.cache.clearHistory();
+  impl_->root_paths_stale_ = true;
+  impl_->refreshRootPaths();
 }
 
 Duration BufferCore::cacheTime() const { return Duration(impl_->cache_time_); }

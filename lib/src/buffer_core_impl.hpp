@@ -11,34 +11,13 @@
 #include <vector>
 
 #include "frame_name_index.hpp"
+#include "frame_record.hpp"
 #include "lcmtf/buffer_core.hpp"
 #include "read_mostly_lock.hpp"
+#include "root_paths.hpp"
 #include "time_cache.hpp"
 
 namespace lcmtf {
-
-using detail::FrameId;
-using detail::kNoFrame;
-
-/// One frame and the edge to its parent.
-struct FrameRecord {
-  std::string_view name;
-  detail::TimeCache cache;
-  std::uint32_t authority = 0;
-  std::uint64_t authority_conflicts = 0;
-  // The highest frame reached from this one through static edges alone (this frame itself
-  // when its edge is not static), and the static edges between them composed, so a lookup
-  // crosses a chain of static edges in one step.
-  FrameId static_top = kNoFrame;
-  Transform static_top_T_frame;
-};
-
-/// What anchors the samples of the edges into `frame` (see TimeCache::reanchor): the static
-/// chain above it, or null when there is none.
-inline const Transform* anchorOf(const std::vector<FrameRecord>& frames, FrameId frame) {
-  const FrameRecord& record = frames[frame];
-  return record.static_top != frame ? &record.static_top_T_frame : nullptr;
-}
 
 /// A step on a lookup's path: one dynamic edge (with the static chain above its parent when
 /// `anchored`), or a static edge or chain of them.
@@ -59,10 +38,6 @@ struct PathEdge {
     next = parent;
   }
 };
-
-/// How a walk steps up the tree: to sample the values (static chains in one step, and the
-/// samples loaded early), only to check that the values exist, or edge by edge.
-enum class Steps { kSampled, kChecked, kEdgeByEdge };
 
 /// Why a lookup failed, kept as plain data so a successful lookup pays nothing for it and
 /// canTransform pays for no message it does not print.
@@ -114,16 +89,27 @@ class BufferCore::Impl {
     return TransformStamped{fromUtime(stamp), std::string(nameOf(target)),
                             std::string(nameOf(source)), value};
   }
+  /// lookup() by the root paths, for the usual case. False when that cannot answer: a frame
+  /// without a path, an edge whose history changes parent, or any failure; then the walk
+  /// must, and `stamp` is left as it was.
+  bool quickLookup(FrameId target, FrameId source, std::int64_t& stamp, Transform* value) const;
   LookupFailure latestCommonTime(FrameId target, FrameId source, std::int64_t& stamp) const;
-  /// The steps from each frame up to their common ancestor at `stamp` (0: the tree as of each
-  /// edge's newest sample).
+  /// The edges from each frame up to their common ancestor at `stamp` (0: the tree as of each
+  /// edge's newest sample), one by one as tf walks them. Lookups the root paths cannot answer
+  /// take this way, which holds in any tree, loops and changing parents included.
   LookupFailure walk(FrameId target, FrameId source, std::int64_t stamp,
                      std::vector<PathEdge>& source_edges, std::vector<PathEdge>& target_edges,
-                     FrameId* ancestor, Steps steps = Steps::kSampled) const;
+                     FrameId* ancestor) const;
   /// Recomputes every frame's static_top after a static edge changed, and the anchored samples
   /// of the edges into frames whose chain changed (exclusive lock).
   void updateStaticChains();
   void computeStaticChains();
+  /// Rebuilds the root paths when the tree's shape has changed since (exclusive lock).
+  void refreshRootPaths() {
+    if (!root_paths_stale_) return;
+    root_paths_.rebuild(frames_);
+    root_paths_stale_ = false;
+  }
   /// The stamps [oldest, newest] at which every dynamic edge between the frames has data, with
   /// the tree as it stands at its newest samples; both zero when every edge is static.
   LookupFailure commonTimeRange(FrameId target, FrameId source, std::int64_t& oldest,
@@ -158,6 +144,8 @@ class BufferCore::Impl {
   std::deque<std::string> names_;  // stable storage behind FrameRecord::name
   std::vector<FrameRecord> frames_;
   detail::FrameNameIndex ids_;
+  RootPaths root_paths_;
+  bool root_paths_stale_ = false;
   std::vector<std::string> authorities_;
   std::unordered_map<std::string, std::uint32_t> authority_ids_;
   std::uint32_t last_authority_ = 0;

@@ -45,35 +45,41 @@ std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId st
 
 namespace {
 
-// The next step up from `frame`: a whole static chain when allowed, else its own edge.
-// Sets edge.next to kNoFrame at a root.
-void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t stamp, Steps steps,
+// A path edge taking `step`, with the value of a static step.
+void takeStep(const std::vector<FrameRecord>& frames, const RootStep& step, PathEdge& edge) {
+  const FrameRecord& record = frames[step.child];
+  edge.child = step.child;
+  edge.parent = step.parent;
+  edge.next = step.next;
+  edge.anchored = step.anchored;
+  switch (step.kind) {
+    case RootStep::Kind::kStaticChain:
+      edge.fixed = &record.static_top_T_frame;
+      break;
+    case RootStep::Kind::kStaticEdge:
+      edge.fixed = &record.cache.staticValue().transform;
+      break;
+    case RootStep::Kind::kDynamic:
+      edge.fixed = nullptr;
+      break;
+  }
+}
+
+// The edge up from `frame`, as it was at `stamp` (0: as of its newest sample); sets
+// edge.next to kNoFrame at a root.
+void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t stamp,
             PathEdge& edge) {
-  const bool whole_chains = steps == Steps::kEdgeByEdge;
-  const FrameRecord& record = frames[frame];
+  const detail::TimeCache& cache = frames[frame].cache;
   edge.child = frame;
   edge.status = SampleStatus::kOk;
-  edge.anchored = false;
-  if (!whole_chains && record.static_top != frame) {
-    edge.parent = edge.next = record.static_top;
-    edge.fixed = &record.static_top_T_frame;
-    return;
-  }
-  const detail::TimeCache& cache = record.cache;
   if (cache.isStatic()) {
-    edge.parent = edge.next = cache.staticValue().parent;
     edge.fixed = &cache.staticValue().transform;
-    return;
+    edge.parent = cache.staticValue().parent;
+  } else {
+    edge.fixed = nullptr;
+    edge.parent = stamp == 0 ? cache.newestParent() : cache.parentAt(stamp, edge.status);
   }
-  edge.fixed = nullptr;
-  edge.parent = stamp == 0 ? cache.newestParent() : cache.parentAt(stamp, edge.status);
   edge.next = edge.parent;
-  if (!whole_chains && edge.parent != kNoFrame) {
-    edge.next = frames[edge.parent].static_top;
-    edge.anchored = edge.next != edge.parent;
-  }
-  // Loading the samples now gives the loads the rest of the walk to complete.
-  if (stamp != 0 && steps == Steps::kSampled) edge.hint = cache.prefetch(stamp, edge.anchored);
 }
 
 // Sets each step's value; the dynamic edges between two samples are interpolated together.
@@ -182,12 +188,63 @@ std::int64_t commonNewest(const std::vector<FrameRecord>& frames,
   return common;
 }
 
+// The path edges of `count` root-path steps; false when a dynamic edge among them has no data
+// at `stamp` (0: at any time), or has changed parent within its history, so that the tree at
+// `stamp` may not be the one the paths were built from. With `prefetch`, starts loading the
+// samples that lookups at `stamp` will read.
+bool takeSteps(const std::vector<FrameRecord>& frames, const RootStep* steps, std::size_t count,
+               std::int64_t stamp, bool prefetch, std::vector<PathEdge>& edges) {
+  edges.clear();
+  for (std::size_t i = 0; i < count; ++i) {
+    PathEdge& edge = edges.emplace_back();
+    takeStep(frames, steps[i], edge);
+    if (!edge.isDynamic()) continue;
+    const detail::TimeCache& cache = frames[edge.child].cache;
+    if (!cache.hasSingleParent() || cache.newestParent() != edge.parent) return false;
+    if (stamp == 0) continue;
+    if (stamp < cache.oldestStamp() || stamp > cache.newestStamp()) return false;
+    if (prefetch) edge.hint = cache.prefetch(stamp, edge.anchored);
+  }
+  return true;
+}
+
+bool haveDataAt(const std::vector<FrameRecord>& frames, const std::vector<PathEdge>& edges,
+                std::int64_t stamp) {
+  for (const PathEdge& edge : edges) {
+    if (!edge.isDynamic()) continue;
+    const detail::TimeCache& cache = frames[edge.child].cache;
+    if (stamp < cache.oldestStamp() || stamp > cache.newestStamp()) return false;
+  }
+  return true;
+}
+
+// Where the two paths' last steps cross the same static chain, or one path's last step
+// crosses the chain the other path is, the edges' own values are used and the chain left
+// out: a lookup of a dynamic edge's child in its parent then gives the stored samples
+// themselves, not with the chain applied and taken off again.
+void dropSharedAnchors(std::vector<PathEdge>& source_edges, std::vector<PathEdge>& target_edges,
+                       FrameId source, FrameId target) {
+  if (source_edges.empty() || target_edges.empty()) return;
+  PathEdge& from_source = source_edges.back();
+  PathEdge& from_target = target_edges.back();
+  if (from_source.anchored && from_target.anchored && from_source.parent == from_target.parent) {
+    from_source.dropAnchor();
+    from_target.dropAnchor();
+  } else if (from_source.anchored && from_source.parent == target) {
+    from_source.dropAnchor();
+    target_edges.clear();
+  } else if (from_target.anchored && from_target.parent == source) {
+    from_target.dropAnchor();
+    source_edges.clear();
+  }
+}
+
 }  // namespace
 
 LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_t stamp,
                                      std::vector<PathEdge>& source_edges,
-                                     std::vector<PathEdge>& target_edges, FrameId* ancestor,
-                                     Steps steps) const {
+                                     std::vector<PathEdge>& target_edges,
+                                     FrameId* ancestor) const {
   WalkScratch& s = scratch;
   if (s.visit_epoch.size() < frames_.size()) {
     s.visit_epoch.resize(frames_.size(), 0);
@@ -207,11 +264,8 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
     return failure;
   };
 
-  // Every frame the source's walk lands on is marked with its place in the walk, and so is the
-  // parent of each anchored step, as reached by that step without its anchor. Static chains
-  // are crossed in one step, so the target's walk may first meet the source's above their
-  // true common ancestor, but only by static edges, which cancel out when composed.
-  constexpr std::uint32_t kUnanchored = std::uint32_t{1} << 31;
+  // Every frame the source's walk reaches is marked with its place in the walk; the target's
+  // walk stops at the first marked frame, their common ancestor.
   FrameId frame = source;
   FrameId source_root = source;
   for (std::size_t depth = 0;; ++depth) {
@@ -224,20 +278,11 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
     }
     // Filled in place: a copy of a freshly written edge would stall on store forwarding.
     PathEdge& edge = source_edges.emplace_back();
-    stepUp(frames_, frame, stamp, steps, edge);
+    stepUp(frames_, frame, stamp, edge);
     if (edge.next == kNoFrame) {
       source_edges.pop_back();
       source_root = frame;
       break;
-    }
-    if (edge.anchored) {
-      if (edge.parent == target) {
-        edge.dropAnchor();
-        *ancestor = target;
-        return {};
-      }
-      s.visit_epoch[edge.parent] = epoch;
-      s.visit_index[edge.parent] = static_cast<std::uint32_t>(source_edges.size()) | kUnanchored;
     }
     frame = edge.next;
   }
@@ -246,15 +291,12 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
   for (std::size_t depth = 0;; ++depth) {
     if (depth > max_depth) return loopFailure(target);
     if (s.visit_epoch[frame] == epoch) {
-      const std::uint32_t index = s.visit_index[frame];
-      source_edges.resize(index & ~kUnanchored);
-      if (index & kUnanchored) source_edges.back().dropAnchor();
+      source_edges.resize(s.visit_index[frame]);
       *ancestor = frame;
       return {};
     }
     PathEdge& edge = target_edges.emplace_back();
-    stepUp(frames_, frame, stamp, steps, edge);
-    if (edge.anchored && s.visit_epoch[edge.parent] == epoch) edge.dropAnchor();
+    stepUp(frames_, frame, stamp, edge);
     if (edge.next == kNoFrame) {
       target_edges.pop_back();
       LookupFailure failure;
@@ -270,6 +312,49 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
   }
 }
 
+bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t& stamp,
+                                   Transform* value) const {
+  RootPaths::Path up_from_source;
+  RootPaths::Path up_from_target;
+  if (!root_paths_.find(source, up_from_source) || !root_paths_.find(target, up_from_target) ||
+      up_from_source.root != up_from_target.root) {
+    return false;
+  }
+  // Above the first frame both paths reach, they are the same and cancel out.
+  std::size_t source_count = up_from_source.size;
+  std::size_t target_count = up_from_target.size;
+  while (source_count > 0 && target_count > 0 &&
+         up_from_source.steps[source_count - 1].child ==
+             up_from_target.steps[target_count - 1].child) {
+    --source_count;
+    --target_count;
+  }
+  WalkScratch& s = scratch;
+  const bool sampled = value != nullptr && stamp != 0;
+  if (!takeSteps(frames_, up_from_source.steps, source_count, stamp, sampled, s.source_edges) ||
+      !takeSteps(frames_, up_from_target.steps, target_count, stamp, sampled, s.target_edges)) {
+    return false;
+  }
+  dropSharedAnchors(s.source_edges, s.target_edges, source, target);
+  std::int64_t at = stamp;
+  if (at == 0) {
+    at = commonNewest(frames_, s.source_edges, s.target_edges);
+    if (!haveDataAt(frames_, s.source_edges, at) || !haveDataAt(frames_, s.target_edges, at)) {
+      return false;
+    }
+  }
+  if (value) {
+    if (sampleEdges(frames_, s.source_edges, at, nullptr) ||
+        sampleEdges(frames_, s.target_edges, at, nullptr)) {
+      return false;
+    }
+    settleValues(s);
+    *value = composePath(s.source_edges, s.target_edges);
+  }
+  stamp = at;
+  return true;
+}
+
 LookupFailure BufferCore::Impl::latestCommonTime(FrameId target, FrameId source,
                                                  std::int64_t& stamp) const {
   stamp = 0;
@@ -278,6 +363,7 @@ LookupFailure BufferCore::Impl::latestCommonTime(FrameId target, FrameId source,
     if (!cache.empty() && !cache.isStatic()) stamp = cache.newestStamp();
     return {};
   }
+  if (quickLookup(target, source, stamp, nullptr)) return {};
   std::vector<PathEdge> source_edges;
   std::vector<PathEdge> target_edges;
   FrameId ancestor = kNoFrame;
@@ -289,6 +375,7 @@ LookupFailure BufferCore::Impl::latestCommonTime(FrameId target, FrameId source,
 LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int64_t& stamp,
                                        Transform* value) const {
   WalkScratch& s = scratch;
+  if (target != source && quickLookup(target, source, stamp, value)) return {};
   LookupFailure failure;
   if (target == source) {
     if (stamp == 0) failure = latestCommonTime(target, source, stamp);
@@ -296,8 +383,7 @@ LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int6
     FrameId ancestor = kNoFrame;
     bool parent_changed = false;
     const bool check_only = value == nullptr && stamp != 0;
-    failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor,
-                   check_only ? Steps::kChecked : Steps::kSampled);
+    failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor);
     if (!failure && check_only) {
       failure = sampleEdges(frames_, s.source_edges, stamp, nullptr, true);
       if (!failure) failure = sampleEdges(frames_, s.target_edges, stamp, nullptr, true);

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "lcmtf/transform.hpp"
+#include "time_cache.hpp"
+
+namespace lcmtf {
+
+using detail::FrameId;
+using detail::kNoFrame;
+
+/// One frame and the edge to its parent.
+struct FrameRecord {
+  std::string_view name;
+  detail::TimeCache cache;
+  std::uint32_t authority = 0;
+  std::uint64_t authority_conflicts = 0;
+  // The highest frame reached from this one through static edges alone (this frame itself
+  // when its edge is not static), and the static edges between them composed, so a lookup
+  // crosses a chain of static edges in one step.
+  FrameId static_top = kNoFrame;
+  Transform static_top_T_frame;
+};
+
+/// What anchors the samples of the edges into `frame` (see TimeCache::reanchor): the static
+/// chain above it, or null when there is none.
+inline const Transform* anchorOf(const std::vector<FrameRecord>& frames, FrameId frame) {
+  const FrameRecord& record = frames[frame];
+  return record.static_top != frame ? &record.static_top_T_frame : nullptr;
+}
+
+}  // namespace lcmtf

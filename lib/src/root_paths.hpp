@@ -1,0 +1,80 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "frame_record.hpp"
+
+namespace lcmtf {
+
+/// One step up the tree as lookups take it: a chain of static edges to the highest frame it
+/// reaches, a single static edge (on a loop of static edges), or one dynamic edge, anchored
+/// to the static chain above its parent when there is one (see TimeCache::reanchor).
+struct RootStep {
+  enum class Kind : std::uint8_t { kStaticChain, kStaticEdge, kDynamic };
+  FrameId child = kNoFrame;
+  FrameId parent = kNoFrame;  // the edge's parent (for a chain, where it ends)
+  FrameId next = kNoFrame;    // where the step ends; kNoFrame above a root
+  Kind kind = Kind::kStaticChain;
+  bool anchored = false;
+};
+
+/// The step up from `frame`, whose dynamic edge (if it has one) has the parent
+/// `parentOf(cache)` gives.
+template <class ParentOf>
+RootStep stepFrom(const std::vector<FrameRecord>& frames, FrameId frame, ParentOf parentOf) {
+  const FrameRecord& record = frames[frame];
+  RootStep step;
+  step.child = frame;
+  if (record.static_top != frame) {
+    step.parent = step.next = record.static_top;
+    return step;
+  }
+  if (record.cache.isStatic()) {
+    step.kind = RootStep::Kind::kStaticEdge;
+    step.parent = step.next = record.cache.staticValue().parent;
+    return step;
+  }
+  step.kind = RootStep::Kind::kDynamic;
+  step.parent = step.next = parentOf(record.cache);
+  if (step.parent != kNoFrame) {
+    step.next = frames[step.parent].static_top;
+    step.anchored = step.next != step.parent;
+  }
+  return step;
+}
+
+/// Every frame's steps up to its root in the tree as of the newest samples, so that a lookup
+/// finds its path by comparing two arrays instead of climbing the tree. Rebuilt whenever an
+/// edge appears, changes parent or changes between static and dynamic.
+class RootPaths {
+ public:
+  struct Path {
+    const RootStep* steps = nullptr;  // from the frame up; steps[size - 1] ends at `root`
+    std::uint32_t size = 0;
+    FrameId root = kNoFrame;
+  };
+
+  void rebuild(const std::vector<FrameRecord>& frames);
+  /// The path up from `frame`, or false when there is none to trust: a frame added since the
+  /// last rebuild, or one on or below a loop.
+  bool find(FrameId frame, Path& path) const {
+    if (frame >= entries_.size() || !entries_[frame].usable) return false;
+    const Entry& entry = entries_[frame];
+    path = Path{steps_.data() + entry.offset, entry.size, entry.root};
+    return true;
+  }
+
+ private:
+  struct Entry {
+    std::uint32_t offset = 0;
+    std::uint32_t size = 0;
+    FrameId root = kNoFrame;
+    bool usable = false;
+  };
+
+  std::vector<RootStep> steps_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace lcmtf
