@@ -8,10 +8,10 @@ namespace lcmtf::detail {
 
 /// One interpolation of a batch: interpolate(*older, *newer, ratio) goes to *out.
 struct InterpolationTask {
-  const Transform* older = nullptr;
-  const Transform* newer = nullptr;
-  double ratio = 0.0;
-  Transform* out = nullptr;
+  const Transform* older;
+  const Transform* newer;
+  double ratio;
+  Transform* out;
 };
 
 /// Runs every task, with interpolate()'s result for each (for unit rotations), but stage by

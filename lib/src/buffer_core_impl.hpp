@@ -19,24 +19,14 @@
 
 namespace lcmtf {
 
-/// A step on a lookup's path: one dynamic edge (with the static chain above its parent when
-/// `anchored`), or a static edge or chain of them.
+/// An edge on the path a walk takes.
 struct PathEdge {
   FrameId child = kNoFrame;
   FrameId parent = kNoFrame;
-  FrameId next = kNoFrame;  // where the step ends
-  bool anchored = false;
   detail::SampleStatus status = detail::SampleStatus::kOk;
-  const Transform* fixed = nullptr;  // the value of a static step
+  const Transform* fixed = nullptr;  // the value of a static edge
   detail::SampleSpan span;           // the samples of a dynamic edge
-  std::size_t hint = detail::TimeCache::kNoHint;
-  const Transform* value = nullptr;  // the step's value, once known
   bool isDynamic() const { return fixed == nullptr; }
-  /// Makes an anchored step end at the edge's parent.
-  void dropAnchor() {
-    anchored = false;
-    next = parent;
-  }
 };
 
 /// Why a lookup failed, kept as plain data so a successful lookup pays nothing for it and

@@ -3,14 +3,12 @@
 
 #include "batch_interpolation.hpp"
 #include "buffer_core_impl.hpp"
-#include "compose.hpp"
+#include "path_product.hpp"
 
 namespace lcmtf {
 
 namespace {
 
-using detail::composeOnto;
-using detail::rotated;
 using detail::SampleStatus;
 
 // Per-thread scratch, so that a lookup allocates nothing once warm.
@@ -22,6 +20,7 @@ struct WalkScratch {
   std::vector<PathEdge> target_edges;
   std::vector<Transform> interpolated;
   std::vector<detail::InterpolationTask> tasks;
+  std::vector<const Transform*> values;
 };
 __attribute__((tls_model("initial-exec"))) thread_local WalkScratch scratch;
 
@@ -45,28 +44,8 @@ std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId st
 
 namespace {
 
-// A path edge taking `step`, with the value of a static step.
-void takeStep(const std::vector<FrameRecord>& frames, const RootStep& step, PathEdge& edge) {
-  const FrameRecord& record = frames[step.child];
-  edge.child = step.child;
-  edge.parent = step.parent;
-  edge.next = step.next;
-  edge.anchored = step.anchored;
-  switch (step.kind) {
-    case RootStep::Kind::kStaticChain:
-      edge.fixed = &record.static_top_T_frame;
-      break;
-    case RootStep::Kind::kStaticEdge:
-      edge.fixed = &record.cache.staticValue().transform;
-      break;
-    case RootStep::Kind::kDynamic:
-      edge.fixed = nullptr;
-      break;
-  }
-}
-
-// The edge up from `frame`, as it was at `stamp` (0: as of its newest sample); sets
-// edge.next to kNoFrame at a root.
+// The edge up from `frame`, as it was at `stamp` (0: as of its newest sample); its parent is
+// kNoFrame at a root.
 void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t stamp,
             PathEdge& edge) {
   const detail::TimeCache& cache = frames[frame].cache;
@@ -79,67 +58,34 @@ void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t 
     edge.fixed = nullptr;
     edge.parent = stamp == 0 ? cache.newestParent() : cache.parentAt(stamp, edge.status);
   }
-  edge.next = edge.parent;
 }
 
-// Sets each step's value; the dynamic edges between two samples are interpolated together.
-void settleValues(WalkScratch& s) {
+// The path's value from each edge's: the dynamic edges between two samples are interpolated
+// together, then all are composed.
+Transform pathValue(WalkScratch& s) {
   std::size_t between = 0;
   for (const auto* edges : {&s.source_edges, &s.target_edges}) {
     for (const PathEdge& edge : *edges) between += edge.isDynamic() && edge.span.newer ? 1 : 0;
   }
   if (s.interpolated.size() < between) s.interpolated.resize(between);
   s.tasks.clear();
+  s.values.clear();
   for (auto* edges : {&s.source_edges, &s.target_edges}) {
     for (PathEdge& edge : *edges) {
       if (!edge.isDynamic()) {
-        edge.value = edge.fixed;
+        s.values.push_back(edge.fixed);
       } else if (!edge.span.newer) {
-        edge.value = edge.span.older;
+        s.values.push_back(edge.span.older);
       } else {
         Transform* out = &s.interpolated[s.tasks.size()];
         s.tasks.push_back({edge.span.older, edge.span.newer, edge.span.ratio, out});
-        edge.value = out;
+        s.values.push_back(out);
       }
     }
   }
   detail::interpolateBatch(s.tasks.data(), s.tasks.size());
-}
-
-// The steps' values from first to last (bottom step first), composed: top_T_bottom.
-struct ChainProduct {
-  const PathEdge* first;
-  std::size_t count;
-  Transform value;
-};
-
-// Each path's lower and upper halves are four independent chains of products, composed in
-// one loop so that their long dependent arithmetic overlaps; the halves are joined after.
-Transform composePath(const std::vector<PathEdge>& source_edges,
-                      const std::vector<PathEdge>& target_edges) {
-  const std::size_t source_low = source_edges.size() / 2;
-  const std::size_t target_low = target_edges.size() / 2;
-  ChainProduct chains[4] = {
-      {source_edges.data(), source_low, Transform::identity()},
-      {source_edges.data() + source_low, source_edges.size() - source_low, Transform::identity()},
-      {target_edges.data(), target_low, Transform::identity()},
-      {target_edges.data() + target_low, target_edges.size() - target_low, Transform::identity()}};
-  const std::size_t longest =
-      std::max(source_edges.size() - source_low, target_edges.size() - target_low);
-  for (std::size_t i = 0; i < longest; ++i) {
-    for (ChainProduct& chain : chains) {
-      if (i < chain.count) composeOnto(*chain.first[i].value, chain.value);
-    }
-  }
-  composeOnto(chains[1].value, chains[0].value);
-  composeOnto(chains[3].value, chains[2].value);
-  const Transform& ancestor_T_source = chains[0].value;
-  const Transform& ancestor_T_target = chains[2].value;
-  // target_T_ancestor * ancestor_T_source, without forming the inverse.
-  const Eigen::Quaterniond target_R_ancestor = ancestor_T_target.rotation.conjugate();
-  return Transform(
-      rotated(target_R_ancestor, ancestor_T_source.translation - ancestor_T_target.translation),
-      target_R_ancestor * ancestor_T_source.rotation);
+  return detail::pathProduct(s.values.data(), s.source_edges.size(),
+                             s.values.data() + s.source_edges.size(), s.target_edges.size());
 }
 
 // The first dynamic edge without data at `stamp` as a failure; fills the spans otherwise,
@@ -152,7 +98,7 @@ LookupFailure sampleEdges(const std::vector<FrameRecord>& frames, std::vector<Pa
     const detail::TimeCache& cache = frames[edge.child].cache;
     if (edge.status == SampleStatus::kOk && check_only) continue;
     if (edge.status == SampleStatus::kOk) {
-      edge.status = cache.find(stamp, edge.span, edge.hint, edge.anchored);
+      edge.status = cache.find(stamp, edge.span);
     }
     if (edge.status == SampleStatus::kOk) {
       if (parent_changed && edge.span.parent != edge.parent) *parent_changed = true;
@@ -186,57 +132,6 @@ std::int64_t commonNewest(const std::vector<FrameRecord>& frames,
     }
   }
   return common;
-}
-
-// The path edges of `count` root-path steps; false when a dynamic edge among them has no data
-// at `stamp` (0: at any time), or has changed parent within its history, so that the tree at
-// `stamp` may not be the one the paths were built from. With `prefetch`, starts loading the
-// samples that lookups at `stamp` will read.
-bool takeSteps(const std::vector<FrameRecord>& frames, const RootStep* steps, std::size_t count,
-               std::int64_t stamp, bool prefetch, std::vector<PathEdge>& edges) {
-  edges.clear();
-  for (std::size_t i = 0; i < count; ++i) {
-    PathEdge& edge = edges.emplace_back();
-    takeStep(frames, steps[i], edge);
-    if (!edge.isDynamic()) continue;
-    const detail::TimeCache& cache = frames[edge.child].cache;
-    if (!cache.hasSingleParent() || cache.newestParent() != edge.parent) return false;
-    if (stamp == 0) continue;
-    if (stamp < cache.oldestStamp() || stamp > cache.newestStamp()) return false;
-    if (prefetch) edge.hint = cache.prefetch(stamp, edge.anchored);
-  }
-  return true;
-}
-
-bool haveDataAt(const std::vector<FrameRecord>& frames, const std::vector<PathEdge>& edges,
-                std::int64_t stamp) {
-  for (const PathEdge& edge : edges) {
-    if (!edge.isDynamic()) continue;
-    const detail::TimeCache& cache = frames[edge.child].cache;
-    if (stamp < cache.oldestStamp() || stamp > cache.newestStamp()) return false;
-  }
-  return true;
-}
-
-// Where the two paths' last steps cross the same static chain, or one path's last step
-// crosses the chain the other path is, the edges' own values are used and the chain left
-// out: a lookup of a dynamic edge's child in its parent then gives the stored samples
-// themselves, not with the chain applied and taken off again.
-void dropSharedAnchors(std::vector<PathEdge>& source_edges, std::vector<PathEdge>& target_edges,
-                       FrameId source, FrameId target) {
-  if (source_edges.empty() || target_edges.empty()) return;
-  PathEdge& from_source = source_edges.back();
-  PathEdge& from_target = target_edges.back();
-  if (from_source.anchored && from_target.anchored && from_source.parent == from_target.parent) {
-    from_source.dropAnchor();
-    from_target.dropAnchor();
-  } else if (from_source.anchored && from_source.parent == target) {
-    from_source.dropAnchor();
-    target_edges.clear();
-  } else if (from_target.anchored && from_target.parent == source) {
-    from_target.dropAnchor();
-    source_edges.clear();
-  }
 }
 
 }  // namespace
@@ -279,12 +174,12 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
     // Filled in place: a copy of a freshly written edge would stall on store forwarding.
     PathEdge& edge = source_edges.emplace_back();
     stepUp(frames_, frame, stamp, edge);
-    if (edge.next == kNoFrame) {
+    if (edge.parent == kNoFrame) {
       source_edges.pop_back();
       source_root = frame;
       break;
     }
-    frame = edge.next;
+    frame = edge.parent;
   }
 
   frame = target;
@@ -297,7 +192,7 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
     }
     PathEdge& edge = target_edges.emplace_back();
     stepUp(frames_, frame, stamp, edge);
-    if (edge.next == kNoFrame) {
+    if (edge.parent == kNoFrame) {
       target_edges.pop_back();
       LookupFailure failure;
       failure.kind = LookupFailure::Kind::kNotConnected;
@@ -308,51 +203,8 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
       failure.edge_parent = frame;
       return failure;
     }
-    frame = edge.next;
+    frame = edge.parent;
   }
-}
-
-bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t& stamp,
-                                   Transform* value) const {
-  RootPaths::Path up_from_source;
-  RootPaths::Path up_from_target;
-  if (!root_paths_.find(source, up_from_source) || !root_paths_.find(target, up_from_target) ||
-      up_from_source.root != up_from_target.root) {
-    return false;
-  }
-  // Above the first frame both paths reach, they are the same and cancel out.
-  std::size_t source_count = up_from_source.size;
-  std::size_t target_count = up_from_target.size;
-  while (source_count > 0 && target_count > 0 &&
-         up_from_source.steps[source_count - 1].child ==
-             up_from_target.steps[target_count - 1].child) {
-    --source_count;
-    --target_count;
-  }
-  WalkScratch& s = scratch;
-  const bool sampled = value != nullptr && stamp != 0;
-  if (!takeSteps(frames_, up_from_source.steps, source_count, stamp, sampled, s.source_edges) ||
-      !takeSteps(frames_, up_from_target.steps, target_count, stamp, sampled, s.target_edges)) {
-    return false;
-  }
-  dropSharedAnchors(s.source_edges, s.target_edges, source, target);
-  std::int64_t at = stamp;
-  if (at == 0) {
-    at = commonNewest(frames_, s.source_edges, s.target_edges);
-    if (!haveDataAt(frames_, s.source_edges, at) || !haveDataAt(frames_, s.target_edges, at)) {
-      return false;
-    }
-  }
-  if (value) {
-    if (sampleEdges(frames_, s.source_edges, at, nullptr) ||
-        sampleEdges(frames_, s.target_edges, at, nullptr)) {
-      return false;
-    }
-    settleValues(s);
-    *value = composePath(s.source_edges, s.target_edges);
-  }
-  stamp = at;
-  return true;
 }
 
 LookupFailure BufferCore::Impl::latestCommonTime(FrameId target, FrameId source,
@@ -413,8 +265,7 @@ LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int6
     if (target == source) {
       *value = Transform::identity();
     } else {
-      settleValues(s);
-      *value = composePath(s.source_edges, s.target_edges);
+      *value = pathValue(s);
     }
   }
   return {};

@@ -1,0 +1,169 @@
+// Lookups by the root paths: the two frames' paths are compared to find where they meet, and
+// the steps below that are sampled, interpolated and composed in batches. Anything unusual
+// (a frame without a path, an edge whose parent changed within its history, data missing)
+// is left to the walk.
+#include <algorithm>
+#include <new>
+
+#include "batch_interpolation.hpp"
+#include "buffer_core_impl.hpp"
+#include "path_product.hpp"
+
+namespace lcmtf {
+
+namespace {
+
+// Longer paths are left to the walk, so that a quick lookup needs no heap.
+constexpr std::size_t kMostSteps = 64;
+
+// A step to take: a static value, or the history of a dynamic edge. Left uninitialized in
+// arrays sized for the longest path; takeSteps() sets every field.
+struct QuickStep {
+  const detail::TimeCache* cache;
+  const Transform* fixed;
+  bool anchored;
+  std::size_t hint;
+};
+
+// Room for a transform, constructed only when used.
+struct TransformRoom {
+  alignas(Transform) unsigned char bytes[sizeof(Transform)];
+};
+
+// Where each path's last step crosses the static chain the other path crosses as well (or
+// is), the edges' own values are used and the chain left out: a lookup of a dynamic edge's
+// child in its parent then gives the stored samples themselves, not with the chain applied
+// and taken off again.
+struct MeetingPoint {
+  std::size_t source_count;
+  std::size_t target_count;
+  bool source_anchored;
+  bool target_anchored;
+};
+
+MeetingPoint meetingPoint(const RootPaths::Path& up_from_source,
+                          const RootPaths::Path& up_from_target, FrameId source, FrameId target) {
+  std::size_t source_count = up_from_source.size;
+  std::size_t target_count = up_from_target.size;
+  // Above the first frame both paths reach, they are the same and cancel out.
+  while (source_count > 0 && target_count > 0 &&
+         up_from_source.steps[source_count - 1].child ==
+             up_from_target.steps[target_count - 1].child) {
+    --source_count;
+    --target_count;
+  }
+  MeetingPoint meeting{source_count, target_count,
+                       source_count > 0 && up_from_source.steps[source_count - 1].anchored,
+                       target_count > 0 && up_from_target.steps[target_count - 1].anchored};
+  if (source_count == 0 || target_count == 0) return meeting;
+  const RootStep& last_source = up_from_source.steps[source_count - 1];
+  const RootStep& last_target = up_from_target.steps[target_count - 1];
+  if (last_source.anchored && last_target.anchored && last_source.parent == last_target.parent) {
+    meeting.source_anchored = meeting.target_anchored = false;
+  } else if (last_source.anchored && last_source.parent == target) {
+    meeting.source_anchored = false;
+    meeting.target_count = 0;
+  } else if (last_target.anchored && last_target.parent == source) {
+    meeting.target_anchored = false;
+    meeting.source_count = 0;
+  }
+  return meeting;
+}
+
+// Fills `out` with the steps of one side; false when a dynamic edge among them has changed
+// parent within its history (the tree at `stamp` may not be the paths'), or has no data at
+// `stamp` (0: checked later).
+bool takeSteps(const std::vector<FrameRecord>& frames, const RootStep* steps, std::size_t count,
+               bool last_anchored, std::int64_t stamp, bool prefetch, QuickStep* out) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const RootStep& step = steps[i];
+    const FrameRecord& record = frames[step.child];
+    QuickStep& quick = out[i];
+    quick = QuickStep{nullptr, nullptr, false, detail::TimeCache::kNoHint};
+    switch (step.kind) {
+      case RootStep::Kind::kStaticChain:
+        quick.fixed = &record.static_top_T_frame;
+        continue;
+      case RootStep::Kind::kStaticEdge:
+        quick.fixed = &record.cache.staticValue().transform;
+        continue;
+      case RootStep::Kind::kDynamic:
+        break;
+    }
+    const detail::TimeCache& cache = record.cache;
+    if (!cache.hasSingleParent() || cache.newestParent() != step.parent) return false;
+    quick.cache = &cache;
+    quick.anchored = i + 1 == count ? last_anchored : step.anchored;
+    if (stamp == 0) continue;
+    if (stamp < cache.oldestStamp() || stamp > cache.newestStamp()) return false;
+    if (prefetch) quick.hint = cache.prefetch(stamp, quick.anchored);
+  }
+  return true;
+}
+
+}  // namespace
+
+bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t& stamp,
+                                   Transform* value) const {
+  RootPaths::Path up_from_source;
+  RootPaths::Path up_from_target;
+  if (!root_paths_.find(source, up_from_source) || !root_paths_.find(target, up_from_target) ||
+      up_from_source.root != up_from_target.root) {
+    return false;
+  }
+  const MeetingPoint meeting = meetingPoint(up_from_source, up_from_target, source, target);
+  const std::size_t count = meeting.source_count + meeting.target_count;
+  if (count > kMostSteps) return false;
+  QuickStep steps[kMostSteps];
+  const bool prefetch = value != nullptr && stamp != 0;
+  if (!takeSteps(frames_, up_from_source.steps, meeting.source_count, meeting.source_anchored,
+                 stamp, prefetch, steps) ||
+      !takeSteps(frames_, up_from_target.steps, meeting.target_count, meeting.target_anchored,
+                 stamp, prefetch, steps + meeting.source_count)) {
+    return false;
+  }
+  std::int64_t at = stamp;
+  if (at == 0) {
+    bool any_dynamic = false;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!steps[i].cache) continue;
+      const std::int64_t newest = steps[i].cache->newestStamp();
+      at = any_dynamic ? std::min(at, newest) : newest;
+      any_dynamic = true;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+      if (steps[i].cache && at < steps[i].cache->oldestStamp()) return false;
+    }
+  }
+  if (value) {
+    const Transform* values[kMostSteps];
+    TransformRoom interpolated[kMostSteps];
+    detail::InterpolationTask tasks[kMostSteps];
+    std::size_t task_count = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      const QuickStep& step = steps[i];
+      if (!step.cache) {
+        values[i] = step.fixed;
+        continue;
+      }
+      detail::SampleSpan span;
+      if (step.cache->find(at, span, step.hint, step.anchored) != detail::SampleStatus::kOk) {
+        return false;
+      }
+      if (!span.newer) {
+        values[i] = span.older;
+        continue;
+      }
+      Transform* out = ::new (static_cast<void*>(interpolated[task_count].bytes)) Transform;
+      tasks[task_count++] = {span.older, span.newer, span.ratio, out};
+      values[i] = out;
+    }
+    detail::interpolateBatch(tasks, task_count);
+    *value = detail::pathProduct(values, meeting.source_count, values + meeting.source_count,
+                                 meeting.target_count);
+  }
+  stamp = at;
+  return true;
+}
+
+}  // namespace lcmtf
