@@ -96,8 +96,8 @@ class TreeChanges : public ::testing::Test {
   BufferCore buffer;
   TreeModel model;
   std::mt19937_64 random{7};
-  const std::vector<std::string> names{"map", "odom", "base", "torso", "arm", "hand",
-                                       "tip", "camera", "lens", "cup"};
+  const std::vector<std::string> names{"map",  "odom", "base",   "torso", "arm",
+                                       "hand", "tip",  "camera", "lens",  "cup"};
 
   Eigen::Isometry3d randomPose() {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -135,8 +135,7 @@ class TreeChanges : public ::testing::Test {
         const std::optional<Answer> expected = model.lookup(target, source);
         const std::string what =
             after + ": " + source + " in " + target + ", in the tree" + model.describe();
-        EXPECT_EQ(buffer.canTransform(target, source, at(kBetween)), expected.has_value())
-            << what;
+        EXPECT_EQ(buffer.canTransform(target, source, at(kBetween)), expected.has_value()) << what;
         if (!expected) {
           EXPECT_THROW(buffer.lookupTransform(target, source, at(kBetween)), TransformException)
               << what;

@@ -138,8 +138,7 @@ std::int64_t commonNewest(const std::vector<FrameRecord>& frames,
 
 LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_t stamp,
                                      std::vector<PathEdge>& source_edges,
-                                     std::vector<PathEdge>& target_edges,
-                                     FrameId* ancestor) const {
+                                     std::vector<PathEdge>& target_edges, FrameId* ancestor) const {
   WalkScratch& s = scratch;
   if (s.visit_epoch.size() < frames_.size()) {
     s.visit_epoch.resize(frames_.size(), 0);

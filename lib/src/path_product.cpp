@@ -1,43 +1,38 @@
 #include "path_product.hpp"
 
-#include <algorithm>
-
 #include "compose.hpp"
 
 namespace lcmtf::detail {
 
 namespace {
 
-// The product top_T_bottom of `count` step values, bottom step first.
-struct ChainProduct {
-  const Transform* const* first;
-  std::size_t count;
-  Transform value;
-};
+// top_T_bottom of `count` step values, bottom step first. A long chain is composed as two
+// halves side by side, so that their dependent arithmetic overlaps, and the halves joined.
+Transform chainProduct(const Transform* const* values, std::size_t count) {
+  if (count == 0) return Transform::identity();
+  if (count < 4) {
+    Transform product = *values[0];
+    for (std::size_t i = 1; i < count; ++i) composeOnto(*values[i], product);
+    return product;
+  }
+  const std::size_t half = count / 2;
+  Transform lower = *values[0];
+  Transform upper = *values[half];
+  for (std::size_t i = 1; i < half; ++i) {
+    composeOnto(*values[i], lower);
+    composeOnto(*values[half + i], upper);
+  }
+  if (count % 2 == 1) composeOnto(*values[count - 1], upper);
+  composeOnto(upper, lower);
+  return lower;
+}
 
 }  // namespace
 
-// Each side's lower and upper halves are four independent chains of products, composed in
-// one loop so that their long dependent arithmetic overlaps; the halves are joined after.
 Transform pathProduct(const Transform* const* up_from_source, std::size_t source_count,
                       const Transform* const* up_from_target, std::size_t target_count) {
-  const std::size_t source_low = source_count / 2;
-  const std::size_t target_low = target_count / 2;
-  ChainProduct chains[4] = {
-      {up_from_source, source_low, Transform::identity()},
-      {up_from_source + source_low, source_count - source_low, Transform::identity()},
-      {up_from_target, target_low, Transform::identity()},
-      {up_from_target + target_low, target_count - target_low, Transform::identity()}};
-  const std::size_t longest = std::max(source_count - source_low, target_count - target_low);
-  for (std::size_t i = 0; i < longest; ++i) {
-    for (ChainProduct& chain : chains) {
-      if (i < chain.count) composeOnto(*chain.first[i], chain.value);
-    }
-  }
-  composeOnto(chains[1].value, chains[0].value);
-  composeOnto(chains[3].value, chains[2].value);
-  const Transform& ancestor_T_source = chains[0].value;
-  const Transform& ancestor_T_target = chains[2].value;
+  const Transform ancestor_T_source = chainProduct(up_from_source, source_count);
+  const Transform ancestor_T_target = chainProduct(up_from_target, target_count);
   // target_T_ancestor * ancestor_T_source, without forming the inverse.
   const Eigen::Quaterniond target_R_ancestor = ancestor_T_target.rotation.conjugate();
   return Transform(

@@ -155,15 +155,6 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
   return InsertOutcome::kAdded;
 }
 
-// Where `stamp` would be if the samples were evenly spaced, as most publishers space them;
-// for oldest <= stamp < newest.
-std::size_t TimeCache::guessIndex(std::int64_t stamp) const {
-  const std::size_t last = count_ - 1;
-  const auto guess =
-      static_cast<std::size_t>(static_cast<double>(stamp - oldest_stamp_) * samples_per_utime_);
-  return std::min(guess, last - 1);
-}
-
 std::size_t TimeCache::prefetch(std::int64_t stamp, bool anchored) const {
   if (is_static_ || count_ < 2 || stamp <= oldest_stamp_ || stamp >= newest_stamp_) {
     return kNoHint;
@@ -176,14 +167,9 @@ std::size_t TimeCache::prefetch(std::int64_t stamp, bool anchored) const {
   return guess;
 }
 
-// The index of the newest sample at or before `stamp`, or count_ when every sample is newer.
-// The guess from even spacing usually ends the search within a step or two.
-std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp, std::size_t hint) const {
-  if (stamp < oldest_stamp_) return count_;
+// The guess was wrong: a few steps from it usually find the place, else a binary search.
+std::size_t TimeCache::searchNear(std::int64_t stamp, std::size_t guess) const {
   const std::size_t last = count_ - 1;
-  if (stamp >= newest_stamp_ || newest_stamp_ <= oldest_stamp_) return last;
-
-  std::size_t guess = hint < last ? hint : guessIndex(stamp);
   for (int step = 0; step < 3; ++step) {
     if (stampAt(guess) > stamp) {
       --guess;
@@ -226,30 +212,6 @@ FrameId TimeCache::parentAt(std::int64_t stamp, SampleStatus& status) const {
   status = SampleStatus::kOk;
   if (hasSingleParent()) return newest_parent_;
   return parentOf(indexAtOrBefore(stamp));
-}
-
-SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span, std::size_t hint,
-                             bool anchored) const {
-  if (is_static_) {
-    span = SampleSpan{&static_value_.transform, nullptr, 0.0, static_value_.parent};
-    return SampleStatus::kOk;
-  }
-  if (count_ == 0) return SampleStatus::kEmpty;
-  if (stamp < oldest_stamp_) return SampleStatus::kPast;
-  if (stamp > newest_stamp_) return SampleStatus::kFuture;
-  const std::size_t index = indexAtOrBefore(stamp, hint);
-  const std::int64_t older_stamp = stampAt(index);
-  const FrameId parent = hasSingleParent() ? newest_parent_ : parentOf(index);
-  const TransformRing& transforms = ring(anchored);
-  if (older_stamp == stamp || (!hasSingleParent() && parentOf(index + 1) != parent)) {
-    span = SampleSpan{&transforms[slot(index)], nullptr, 0.0, parent};
-    return SampleStatus::kOk;
-  }
-  span = SampleSpan{&transforms[slot(index)], &transforms[slot(index + 1)],
-                    static_cast<double>(stamp - older_stamp) /
-                        static_cast<double>(stampAt(index + 1) - older_stamp),
-                    parent};
-  return SampleStatus::kOk;
 }
 
 }  // namespace lcmtf::detail

@@ -117,6 +117,7 @@ class TimeCache {
   void startAnchoring();
   void move(std::size_t from, std::size_t to);
   std::size_t indexAtOrBefore(std::int64_t stamp, std::size_t hint = kNoHint) const;
+  std::size_t searchNear(std::int64_t stamp, std::size_t guess) const;
   std::size_t guessIndex(std::int64_t stamp) const;
   void grow(std::int64_t cache_time);
   void noteParentChanges(std::size_t index);
@@ -158,6 +159,50 @@ void TimeCache::reanchor(AnchorOf anchorOf) {
   for (std::size_t i = 0; i < count_; ++i) {
     anchored_.store(slot(i), anchoredValue(anchorOf(parentOf(i)), transformAt(i)));
   }
+}
+
+// Where `stamp` would be if the samples were evenly spaced, as most publishers space them;
+// for oldest <= stamp < newest.
+inline std::size_t TimeCache::guessIndex(std::int64_t stamp) const {
+  const std::size_t last = count_ - 1;
+  const auto guess =
+      static_cast<std::size_t>(static_cast<double>(stamp - oldest_stamp_) * samples_per_utime_);
+  return std::min(guess, last - 1);
+}
+
+// The index of the newest sample at or before `stamp`, or count_ when every sample is newer.
+// The guess from even spacing (or the hint) is usually right.
+inline std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp, std::size_t hint) const {
+  if (stamp < oldest_stamp_) return count_;
+  const std::size_t last = count_ - 1;
+  if (stamp >= newest_stamp_ || newest_stamp_ <= oldest_stamp_) return last;
+  const std::size_t guess = hint < last ? hint : guessIndex(stamp);
+  if (stampAt(guess) <= stamp && stamp < stampAt(guess + 1)) return guess;
+  return searchNear(stamp, guess);
+}
+
+inline SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span, std::size_t hint,
+                                    bool anchored) const {
+  if (is_static_) {
+    span = SampleSpan{&static_value_.transform, nullptr, 0.0, static_value_.parent};
+    return SampleStatus::kOk;
+  }
+  if (count_ == 0) return SampleStatus::kEmpty;
+  if (stamp < oldest_stamp_) return SampleStatus::kPast;
+  if (stamp > newest_stamp_) return SampleStatus::kFuture;
+  const std::size_t index = indexAtOrBefore(stamp, hint);
+  const std::int64_t older_stamp = stampAt(index);
+  const FrameId parent = hasSingleParent() ? newest_parent_ : parentOf(index);
+  const TransformRing& transforms = ring(anchored);
+  if (older_stamp == stamp || (!hasSingleParent() && parentOf(index + 1) != parent)) {
+    span = SampleSpan{&transforms[slot(index)], nullptr, 0.0, parent};
+    return SampleStatus::kOk;
+  }
+  span = SampleSpan{&transforms[slot(index)], &transforms[slot(index + 1)],
+                    static_cast<double>(stamp - older_stamp) /
+                        static_cast<double>(stampAt(index + 1) - older_stamp),
+                    parent};
+  return SampleStatus::kOk;
 }
 
 }  // namespace lcmtf::detail
