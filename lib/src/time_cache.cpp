@@ -155,18 +155,6 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
   return InsertOutcome::kAdded;
 }
 
-std::size_t TimeCache::prefetch(std::int64_t stamp, bool anchored) const {
-  if (is_static_ || count_ < 2 || stamp <= oldest_stamp_ || stamp >= newest_stamp_) {
-    return kNoHint;
-  }
-  const std::size_t guess = guessIndex(stamp);
-  __builtin_prefetch(&stamps_[slot(guess)]);
-  const TransformRing& transforms = ring(anchored);
-  __builtin_prefetch(transforms.address(slot(guess)));
-  __builtin_prefetch(transforms.address(slot(guess + 1)));
-  return guess;
-}
-
 // The guess was wrong: a few steps from it usually find the place, else a binary search.
 std::size_t TimeCache::searchNear(std::int64_t stamp, std::size_t guess) const {
   const std::size_t last = count_ - 1;

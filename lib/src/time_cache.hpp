@@ -170,6 +170,18 @@ inline std::size_t TimeCache::guessIndex(std::int64_t stamp) const {
   return std::min(guess, last - 1);
 }
 
+inline std::size_t TimeCache::prefetch(std::int64_t stamp, bool anchored) const {
+  if (is_static_ || count_ < 2 || stamp <= oldest_stamp_ || stamp >= newest_stamp_) {
+    return kNoHint;
+  }
+  const std::size_t guess = guessIndex(stamp);
+  __builtin_prefetch(&stamps_[slot(guess)]);
+  const TransformRing& transforms = ring(anchored);
+  __builtin_prefetch(transforms.address(slot(guess)));
+  __builtin_prefetch(transforms.address(slot(guess + 1)));
+  return guess;
+}
+
 // The index of the newest sample at or before `stamp`, or count_ when every sample is newer.
 // The guess from even spacing (or the hint) is usually right.
 inline std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp, std::size_t hint) const {
