@@ -19,16 +19,22 @@ void interpolateLanes(const InterpolationTask* tasks, std::size_t count) {
   double arc_squared[kLanes];
   double inverse_sinc[kLanes];
 
+  // y is kept at 0 for an arc already known, since only short arcs are given.
   for (std::size_t i = 0; i < count; ++i) {
     const Eigen::Vector4d& a = tasks[i].older->rotation.coeffs();
+    const double known_arc = tasks[i].arc_squared;
     far_side[i] = tasks[i].newer->rotation.coeffs();
-    if (a.dot(far_side[i]) < 0.0) far_side[i] = -far_side[i];
-    y[i] = 0.25 * (a - far_side[i]).squaredNorm();
+    if (known_arc == known_arc) {
+      if (std::signbit(known_arc)) far_side[i] = -far_side[i];
+      arc_squared[i] = std::fabs(known_arc);
+      y[i] = 0.0;
+    } else {
+      if (a.dot(far_side[i]) < 0.0) far_side[i] = -far_side[i];
+      y[i] = 0.25 * (a - far_side[i]).squaredNorm();
+      if (y[i] <= kShortSeriesLimit) arc_squared[i] = shortArcSquared(y[i]);
+    }
     weight_a[i] = 1.0 - tasks[i].ratio;
     weight_b[i] = tasks[i].ratio;
-  }
-  for (std::size_t i = 0; i < count; ++i) {
-    if (y[i] <= kShortSeriesLimit) arc_squared[i] = shortArcSquared(y[i]);
   }
   for (std::size_t i = 0; i < count; ++i) {
     if (y[i] <= kShortSeriesLimit) inverse_sinc[i] = 1.0 / horner<5>(kSinc, arc_squared[i]);
@@ -53,7 +59,8 @@ void interpolateLanes(const InterpolationTask* tasks, std::size_t count) {
       out.translation =
           task.older->translation + ratio * (task.newer->translation - task.older->translation);
       // Stored rotations are unit to rounding and the weights exact, so the sum is unit too.
-      out.rotation.coeffs() = weight_a[i] * task.older->rotation.coeffs() + weight_b[i] * far_side[i];
+      out.rotation.coeffs() =
+          weight_a[i] * task.older->rotation.coeffs() + weight_b[i] * far_side[i];
     }
   }
 }

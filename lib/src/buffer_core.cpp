@@ -165,8 +165,8 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
         record.cache.staticValue().transform.translation == value.translation &&
         record.cache.staticValue().transform.rotation.coeffs() == value.rotation.coeffs();
     if (!unchanged) {
-      root_paths_stale_ = root_paths_stale_ || !was_static ||
-                          record.cache.staticValue().parent != parent_id;
+      root_paths_stale_ =
+          root_paths_stale_ || !was_static || record.cache.staticValue().parent != parent_id;
       record.cache.setStatic(parent_id, value);
       updateStaticChains();
     }

@@ -78,7 +78,8 @@ Transform pathValue(WalkScratch& s) {
         s.values.push_back(edge.span.older);
       } else {
         Transform* out = &s.interpolated[s.tasks.size()];
-        s.tasks.push_back({edge.span.older, edge.span.newer, edge.span.ratio, out});
+        s.tasks.push_back(
+            {edge.span.older, edge.span.newer, edge.span.ratio, out, edge.span.arc_squared});
         s.values.push_back(out);
       }
     }

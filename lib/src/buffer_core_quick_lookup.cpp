@@ -155,7 +155,7 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
         continue;
       }
       Transform* out = ::new (static_cast<void*>(interpolated[task_count].bytes)) Transform;
-      tasks[task_count++] = {span.older, span.newer, span.ratio, out};
+      tasks[task_count++] = {span.older, span.newer, span.ratio, out, span.arc_squared};
       values[i] = out;
     }
     detail::interpolateBatch(tasks, task_count);

@@ -52,7 +52,7 @@ void TimeCache::refreshEnds() {
 void TimeCache::put(std::size_t index, std::int64_t stamp, FrameId parent,
                     const Transform& transform, const Transform* anchor_T_parent) {
   const std::size_t at = slot(index);
-  stamps_[at] = stamp;
+  stamps_[at].stamp = stamp;
   parents_[at] = parent;
   transforms_.store(at, transform);
   if (anchoring_) anchored_.store(at, anchoredValue(anchor_T_parent, transform));
@@ -65,6 +65,12 @@ void TimeCache::move(std::size_t from, std::size_t to) {
   parents_[destination] = parents_[source];
   transforms_.store(destination, transforms_[source]);
   if (anchoring_) anchored_.store(destination, anchored_[source]);
+}
+
+void TimeCache::refreshArc(std::size_t index) {
+  if (index + 1 >= count_) return;
+  stamps_[slot(index)].arc_to_next =
+      signedArcSquared(transformAt(index).rotation, transformAt(index + 1).rotation);
 }
 
 // Until now every anchor was the identity: each anchored value is the sample itself.
@@ -97,12 +103,12 @@ void TimeCache::grow(std::int64_t cache_time) {
     const double with_margin = std::min(window_samples + 16.0, double(kLargestJump));
     while (static_cast<double>(wanted) < with_margin) wanted *= 2;
   }
-  UnfilledArray<std::int64_t> stamps(wanted);
+  UnfilledArray<SampleTime> stamps(wanted);
   UnfilledArray<FrameId> parents(wanted);
   TransformRing transforms(wanted);
   TransformRing anchored(anchoring_ ? wanted : 0);
   for (std::size_t i = 0; i < count_; ++i) {
-    stamps[i] = stampAt(i);
+    stamps[i] = stamps_[slot(i)];
     parents[i] = parentOf(i);
     transforms.store(i, transformAt(i));
     if (anchoring_) anchored.store(i, anchored_[slot(i)]);
@@ -128,6 +134,8 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     const std::size_t index = indexAtOrBefore(sample.stamp);
     if (index < count_ && stampAt(index) == sample.stamp) {
       put(index, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
+      if (index > 0) refreshArc(index - 1);
+      refreshArc(index);
       noteParentChanges(index);
       refreshEnds();
       return InsertOutcome::kReplaced;
@@ -138,6 +146,8 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     for (std::size_t i = count_; i > insert_at; --i) move(i - 1, i);
     put(insert_at, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
     ++count_;
+    if (insert_at > 0) refreshArc(insert_at - 1);
+    refreshArc(insert_at);
     noteParentChanges(insert_at);
     refreshEnds();
     return InsertOutcome::kAdded;
@@ -145,6 +155,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
   if (count_ == stamps_.size()) grow(cache_time);
   put(count_, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
   ++count_;
+  if (count_ > 1) refreshArc(count_ - 2);
   noteParentChanges(count_ - 1);
   const std::int64_t horizon = saturatingSubtract(sample.stamp, cache_time);
   while (stampAt(0) < horizon) {

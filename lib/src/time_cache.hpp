@@ -5,6 +5,7 @@
 
 #include "compose.hpp"
 #include "lcmtf/transform.hpp"
+#include "slerp_weights.hpp"
 #include "transform_ring.hpp"
 #include "unfilled_array.hpp"
 
@@ -36,6 +37,7 @@ struct SampleSpan {
   const Transform* newer = nullptr;
   double ratio = 0.0;
   FrameId parent = kNoFrame;
+  double arc_squared = 0.0;  // signedArcSquared(older, newer) when `newer`
   Transform value() const { return newer ? interpolate(*older, *newer, ratio) : *older; }
 };
 
@@ -101,7 +103,7 @@ class TimeCache {
 
  private:
   std::size_t slot(std::size_t index) const { return (head_ + index) & mask_; }
-  std::int64_t stampAt(std::size_t index) const { return stamps_[slot(index)]; }
+  std::int64_t stampAt(std::size_t index) const { return stamps_[slot(index)].stamp; }
   FrameId parentOf(std::size_t index) const { return parents_[slot(index)]; }
   const Transform& transformAt(std::size_t index) const { return transforms_[slot(index)]; }
   const TransformRing& ring(bool anchored) const {
@@ -116,6 +118,8 @@ class TimeCache {
   }
   void startAnchoring();
   void move(std::size_t from, std::size_t to);
+  /// Works out the arc from sample `index` to the next one, when there is a next one.
+  void refreshArc(std::size_t index);
   std::size_t indexAtOrBefore(std::int64_t stamp, std::size_t hint = kNoHint) const;
   std::size_t searchNear(std::int64_t stamp, std::size_t guess) const;
   std::size_t guessIndex(std::int64_t stamp) const;
@@ -123,7 +127,15 @@ class TimeCache {
   void noteParentChanges(std::size_t index);
   void refreshEnds();
 
-  UnfilledArray<std::int64_t> stamps_;
+  // A sample's stamp, with what interpolating to the next sample needs to know of the arc
+  // between their rotations (signedArcSquared()); the same for the anchored values, since a
+  // fixed rotation applied to both samples moves them together on the sphere. Kept beside the
+  // stamp, which the search for a time reads anyway.
+  struct SampleTime {
+    std::int64_t stamp;
+    double arc_to_next;
+  };
+  UnfilledArray<SampleTime> stamps_;
   UnfilledArray<FrameId> parents_;
   TransformRing transforms_;
   // In use only once some sample's anchor is not the identity.
@@ -213,7 +225,7 @@ inline SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span, std::s
   span = SampleSpan{&transforms[slot(index)], &transforms[slot(index + 1)],
                     static_cast<double>(stamp - older_stamp) /
                         static_cast<double>(stampAt(index + 1) - older_stamp),
-                    parent};
+                    parent, stamps_[slot(index)].arc_to_next};
   return SampleStatus::kOk;
 }
 
