@@ -43,6 +43,7 @@ void TimeCache::refreshEnds() {
   oldest_parent_ = parentOf(0);
   newest_stamp_ = stampAt(count_ - 1);
   newest_parent_ = parentOf(count_ - 1);
+  newest_rotation_ = transformAt(count_ - 1).rotation;
   samples_per_utime_ =
       newest_stamp_ > oldest_stamp_
           ? static_cast<double>(count_ - 1) / static_cast<double>(newest_stamp_ - oldest_stamp_)
@@ -153,9 +154,13 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     return InsertOutcome::kAdded;
   }
   if (count_ == stamps_.size()) grow(cache_time);
+  // From the newest sample's copy: its slot in the ring may have left the cache by now.
+  if (count_ > 0) {
+    stamps_[slot(count_ - 1)].arc_to_next =
+        signedArcSquared(newest_rotation_, sample.transform.rotation);
+  }
   put(count_, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
   ++count_;
-  if (count_ > 1) refreshArc(count_ - 2);
   noteParentChanges(count_ - 1);
   const std::int64_t horizon = saturatingSubtract(sample.stamp, cache_time);
   while (stampAt(0) < horizon) {

@@ -154,6 +154,7 @@ class TimeCache {
   std::int64_t newest_stamp_ = 0;
   FrameId oldest_parent_ = kNoFrame;
   FrameId newest_parent_ = kNoFrame;
+  Eigen::Quaterniond newest_rotation_ = Eigen::Quaterniond::Identity();
   double samples_per_utime_ = 0.0;  // (count - 1) / (newest - oldest), for guessIndex()
 };
 
