@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "slerp_weights.hpp"
+#include "wide_vectors.hpp"
 
 namespace lcmtf::detail {
 
@@ -11,7 +12,8 @@ namespace {
 
 constexpr std::size_t kLanes = 16;
 
-void interpolateLanes(const InterpolationTask* tasks, std::size_t count) {
+[[gnu::always_inline]] inline void interpolateLanes(const InterpolationTask* tasks,
+                                                    std::size_t count) {
   Eigen::Vector4d far_side[kLanes];  // each newer rotation on its older one's side of the sphere
   double y[kLanes];
   double weight_a[kLanes];
@@ -67,7 +69,7 @@ void interpolateLanes(const InterpolationTask* tasks, std::size_t count) {
 
 }  // namespace
 
-void interpolateBatch(const InterpolationTask* tasks, std::size_t count) {
+LCMTF_WIDE_VECTORS void interpolateBatch(const InterpolationTask* tasks, std::size_t count) {
   for (std::size_t first = 0; first < count; first += kLanes) {
     interpolateLanes(tasks + first, std::min(kLanes, count - first));
   }

@@ -1,6 +1,7 @@
 #include "path_product.hpp"
 
 #include "compose.hpp"
+#include "wide_vectors.hpp"
 
 namespace lcmtf::detail {
 
@@ -8,7 +9,8 @@ namespace {
 
 // top_T_bottom of `count` step values, bottom step first. A long chain is composed as two
 // halves side by side, so that their dependent arithmetic overlaps, and the halves joined.
-Transform chainProduct(const Transform* const* values, std::size_t count) {
+[[gnu::always_inline]] inline Transform chainProduct(const Transform* const* values,
+                                                     std::size_t count) {
   if (count == 0) return Transform::identity();
   if (count < 4) {
     Transform product = *values[0];
@@ -29,8 +31,10 @@ Transform chainProduct(const Transform* const* values, std::size_t count) {
 
 }  // namespace
 
-Transform pathProduct(const Transform* const* up_from_source, std::size_t source_count,
-                      const Transform* const* up_from_target, std::size_t target_count) {
+LCMTF_WIDE_VECTORS Transform pathProduct(const Transform* const* up_from_source,
+                                         std::size_t source_count,
+                                         const Transform* const* up_from_target,
+                                         std::size_t target_count) {
   const Transform ancestor_T_source = chainProduct(up_from_source, source_count);
   const Transform ancestor_T_target = chainProduct(up_from_target, target_count);
   // target_T_ancestor * ancestor_T_source, without forming the inverse.
