@@ -45,7 +45,10 @@ FrameId BufferCore::Impl::addFrame(std::string_view name) {
   if (existing != kNoFrame) return existing;
   const std::string& stored = names_.emplace_back(name);
   const auto id = static_cast<FrameId>(frames_.size());
+  const FrameRecord* before = frames_.data();
   FrameRecord& record = frames_.emplace_back();
+  // The root paths point into the frames.
+  root_paths_stale_ = root_paths_stale_ || frames_.data() != before;
   record.name = stored;
   record.static_top = id;
   ids_.insert(stored, id);
@@ -457,7 +460,9 @@ FrameHandle BufferCore::resolveFrame(const std::string& frame) {
     if (id != kNoFrame) return FrameHandle{id};
   }
   ExclusiveLock lock(impl_->lock_);
-  return FrameHandle{impl_->addFrame(name)};
+  const FrameHandle handle{impl_->addFrame(name)};
+  impl_->refreshRootPaths();
+  return handle;
 }
 
 FrameHandle BufferCore::findFrame(const std::string& frame) const {

@@ -73,26 +73,15 @@ MeetingPoint meetingPoint(const RootPaths::Path& up_from_source,
 // Fills `out` with the steps of one side; false when a dynamic edge among them has changed
 // parent within its history (the tree at `stamp` may not be the paths'), or has no data at
 // `stamp` (0: checked later).
-bool takeSteps(const std::vector<FrameRecord>& frames, const RootStep* steps, std::size_t count,
-               bool last_anchored, std::int64_t stamp, bool prefetch, QuickStep* out) {
+bool takeSteps(const RootStep* steps, std::size_t count, bool last_anchored, std::int64_t stamp,
+               bool prefetch, QuickStep* out) {
   for (std::size_t i = 0; i < count; ++i) {
     const RootStep& step = steps[i];
-    const FrameRecord& record = frames[step.child];
     QuickStep& quick = out[i];
-    quick = QuickStep{nullptr, nullptr, false, detail::TimeCache::kNoHint};
-    switch (step.kind) {
-      case RootStep::Kind::kStaticChain:
-        quick.fixed = &record.static_top_T_frame;
-        continue;
-      case RootStep::Kind::kStaticEdge:
-        quick.fixed = &record.cache.staticValue().transform;
-        continue;
-      case RootStep::Kind::kDynamic:
-        break;
-    }
-    const detail::TimeCache& cache = record.cache;
+    quick = QuickStep{step.cache, step.fixed, false, detail::TimeCache::kNoHint};
+    if (!step.cache) continue;
+    const detail::TimeCache& cache = *step.cache;
     if (!cache.hasSingleParent() || cache.newestParent() != step.parent) return false;
-    quick.cache = &cache;
     quick.anchored = i + 1 == count ? last_anchored : step.anchored;
     if (stamp == 0) continue;
     if (stamp < cache.oldestStamp() || stamp > cache.newestStamp()) return false;
@@ -107,7 +96,8 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
                                    Transform* value) const {
   RootPaths::Path up_from_source;
   RootPaths::Path up_from_target;
-  if (!root_paths_.find(source, up_from_source) || !root_paths_.find(target, up_from_target) ||
+  if (!root_paths_.find(frames_, source, up_from_source) ||
+      !root_paths_.find(frames_, target, up_from_target) ||
       up_from_source.root != up_from_target.root) {
     return false;
   }
@@ -116,10 +106,10 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
   if (count > kMostSteps) return false;
   QuickStep steps[kMostSteps];
   const bool prefetch = value != nullptr && stamp != 0;
-  if (!takeSteps(frames_, up_from_source.steps, meeting.source_count, meeting.source_anchored,
-                 stamp, prefetch, steps) ||
-      !takeSteps(frames_, up_from_target.steps, meeting.target_count, meeting.target_anchored,
-                 stamp, prefetch, steps + meeting.source_count)) {
+  if (!takeSteps(up_from_source.steps, meeting.source_count, meeting.source_anchored, stamp,
+                 prefetch, steps) ||
+      !takeSteps(up_from_target.steps, meeting.target_count, meeting.target_anchored, stamp,
+                 prefetch, steps + meeting.source_count)) {
     return false;
   }
   std::int64_t at = stamp;

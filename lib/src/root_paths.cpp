@@ -2,6 +2,29 @@
 
 namespace lcmtf {
 
+RootStep stepFrom(const std::vector<FrameRecord>& frames, FrameId frame) {
+  const FrameRecord& record = frames[frame];
+  RootStep step;
+  step.child = frame;
+  if (record.static_top != frame) {
+    step.fixed = &record.static_top_T_frame;
+    step.parent = step.next = record.static_top;
+    return step;
+  }
+  if (record.cache.isStatic()) {
+    step.fixed = &record.cache.staticValue().transform;
+    step.parent = step.next = record.cache.staticValue().parent;
+    return step;
+  }
+  step.cache = &record.cache;
+  step.parent = step.next = record.cache.newestParent();
+  if (step.parent != kNoFrame) {
+    step.next = frames[step.parent].static_top;
+    step.anchored = step.next != step.parent;
+  }
+  return step;
+}
+
 // Each frame's path is its own step followed by a copy of the path of the frame that step
 // reaches, so frames are settled from the top down: a climb stops at the first frame whose
 // path is known, or at a root, and the frames it passed are filled in on the way back.
@@ -11,14 +34,14 @@ void RootPaths::rebuild(const std::vector<FrameRecord>& frames) {
   std::vector<RootStep> own(frames.size());
   entries_.assign(frames.size(), Entry{});
   steps_.clear();
-  const auto newestParent = [](const detail::TimeCache& cache) { return cache.newestParent(); };
+  built_for_ = frames.data();
   std::vector<FrameId> climb;
   for (FrameId start = 1; start < frames.size(); ++start) {
     FrameId frame = start;
     while (state[frame] == State::kUnseen) {
       state[frame] = State::kClimbing;
       climb.push_back(frame);
-      own[frame] = stepFrom(frames, frame, newestParent);
+      own[frame] = stepFrom(frames, frame);
       if (own[frame].next == kNoFrame) break;
       frame = own[frame].next;
     }

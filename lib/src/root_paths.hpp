@@ -11,38 +11,16 @@ namespace lcmtf {
 /// reaches, a single static edge (on a loop of static edges), or one dynamic edge, anchored
 /// to the static chain above its parent when there is one (see TimeCache::reanchor).
 struct RootStep {
-  enum class Kind : std::uint8_t { kStaticChain, kStaticEdge, kDynamic };
+  const detail::TimeCache* cache = nullptr;  // a dynamic edge's history; null when static
+  const Transform* fixed = nullptr;          // a static step's value
   FrameId child = kNoFrame;
   FrameId parent = kNoFrame;  // the edge's parent (for a chain, where it ends)
   FrameId next = kNoFrame;    // where the step ends; kNoFrame above a root
-  Kind kind = Kind::kStaticChain;
   bool anchored = false;
 };
 
-/// The step up from `frame`, whose dynamic edge (if it has one) has the parent
-/// `parentOf(cache)` gives.
-template <class ParentOf>
-RootStep stepFrom(const std::vector<FrameRecord>& frames, FrameId frame, ParentOf parentOf) {
-  const FrameRecord& record = frames[frame];
-  RootStep step;
-  step.child = frame;
-  if (record.static_top != frame) {
-    step.parent = step.next = record.static_top;
-    return step;
-  }
-  if (record.cache.isStatic()) {
-    step.kind = RootStep::Kind::kStaticEdge;
-    step.parent = step.next = record.cache.staticValue().parent;
-    return step;
-  }
-  step.kind = RootStep::Kind::kDynamic;
-  step.parent = step.next = parentOf(record.cache);
-  if (step.parent != kNoFrame) {
-    step.next = frames[step.parent].static_top;
-    step.anchored = step.next != step.parent;
-  }
-  return step;
-}
+/// The step up from `frame`, as of each edge's newest sample.
+RootStep stepFrom(const std::vector<FrameRecord>& frames, FrameId frame);
 
 /// Every frame's steps up to its root in the tree as of the newest samples, so that a lookup
 /// finds its path by comparing two arrays instead of climbing the tree. Rebuilt whenever an
@@ -56,10 +34,13 @@ class RootPaths {
   };
 
   void rebuild(const std::vector<FrameRecord>& frames);
-  /// The path up from `frame`, or false when there is none to trust: a frame added since the
-  /// last rebuild, or one on or below a loop.
-  bool find(FrameId frame, Path& path) const {
-    if (frame >= entries_.size() || !entries_[frame].usable) return false;
+  /// The path up from `frame` of `frames`, or false when there is none to trust: a frame added
+  /// since the last rebuild, one on or below a loop, or frames that have moved since (the
+  /// steps point into them).
+  bool find(const std::vector<FrameRecord>& frames, FrameId frame, Path& path) const {
+    if (frames.data() != built_for_ || frame >= entries_.size() || !entries_[frame].usable) {
+      return false;
+    }
     const Entry& entry = entries_[frame];
     path = Path{steps_.data() + entry.offset, entry.size, entry.root};
     return true;
@@ -75,6 +56,7 @@ class RootPaths {
 
   std::vector<RootStep> steps_;
   std::vector<Entry> entries_;
+  const FrameRecord* built_for_ = nullptr;
 };
 
 }  // namespace lcmtf
