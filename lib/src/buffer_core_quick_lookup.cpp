@@ -136,10 +136,7 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
         values[i] = step.fixed;
         continue;
       }
-      detail::SampleSpan span;
-      if (step.cache->find(at, span, step.hint, step.anchored) != detail::SampleStatus::kOk) {
-        return false;
-      }
+      const detail::SampleSpan span = step.cache->spanWithin(at, step.hint, step.anchored);
       if (!span.newer) {
         values[i] = span.older;
         continue;

@@ -95,6 +95,9 @@ class TimeCache {
                     bool anchored = false) const;
   /// The parent at `stamp`, whether or not the edge has data there (then its nearest sample's
   /// parent), with the status find() would give; kNoFrame when the edge is empty.
+  /// find() for a dynamic edge whose samples all have one parent and that has data at
+  /// `stamp`, without checking either.
+  SampleSpan spanWithin(std::int64_t stamp, std::size_t hint, bool anchored) const;
   FrameId parentAt(std::int64_t stamp, SampleStatus& status) const;
   /// Starts loading the samples find(stamp) will read, so several edges load at once; returns
   /// where it guessed they are, as a hint for find().
@@ -204,6 +207,19 @@ inline std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp, std::size_t hi
   const std::size_t guess = hint < last ? hint : guessIndex(stamp);
   if (stampAt(guess) <= stamp && stamp < stampAt(guess + 1)) return guess;
   return searchNear(stamp, guess);
+}
+
+inline SampleSpan TimeCache::spanWithin(std::int64_t stamp, std::size_t hint, bool anchored) const {
+  const bool hint_holds = hint != kNoHint && stampAt(hint) <= stamp && stamp < stampAt(hint + 1);
+  const std::size_t index = hint_holds ? hint : indexAtOrBefore(stamp);
+  const std::int64_t older_stamp = stampAt(index);
+  const TransformRing& transforms = ring(anchored);
+  if (older_stamp == stamp)
+    return SampleSpan{&transforms[slot(index)], nullptr, 0.0, newest_parent_};
+  return SampleSpan{&transforms[slot(index)], &transforms[slot(index + 1)],
+                    static_cast<double>(stamp - older_stamp) /
+                        static_cast<double>(stampAt(index + 1) - older_stamp),
+                    newest_parent_, stamps_[slot(index)].arc_to_next};
 }
 
 inline SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span, std::size_t hint,
