@@ -22,4 +22,10 @@ inline void composeOnto(const Transform& above, Transform& below) {
   below.rotation = above.rotation * below.rotation;
 }
 
+/// above * below, in place of above.
+inline void composeUnder(Transform& above, const Transform& below) {
+  above.translation += rotated(above.rotation, below.translation);
+  above.rotation = above.rotation * below.rotation;
+}
+
 }  // namespace lcmtf::detail

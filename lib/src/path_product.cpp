@@ -7,26 +7,15 @@ namespace lcmtf::detail {
 
 namespace {
 
-// top_T_bottom of `count` step values, bottom step first. A long chain is composed as two
-// halves side by side, so that their dependent arithmetic overlaps, and the halves joined.
+// top_T_bottom of `count` step values, bottom step first, composed from the top down:
+// product = product * step. Each step then only waits on the rotation composed so far, while
+// the translations rotate into place alongside and add up at the end of the chain.
 [[gnu::always_inline]] inline Transform chainProduct(const Transform* const* values,
                                                      std::size_t count) {
   if (count == 0) return Transform::identity();
-  if (count < 4) {
-    Transform product = *values[0];
-    for (std::size_t i = 1; i < count; ++i) composeOnto(*values[i], product);
-    return product;
-  }
-  const std::size_t half = count / 2;
-  Transform lower = *values[0];
-  Transform upper = *values[half];
-  for (std::size_t i = 1; i < half; ++i) {
-    composeOnto(*values[i], lower);
-    composeOnto(*values[half + i], upper);
-  }
-  if (count % 2 == 1) composeOnto(*values[count - 1], upper);
-  composeOnto(upper, lower);
-  return lower;
+  Transform product = *values[count - 1];
+  for (std::size_t i = count - 1; i-- > 0;) composeUnder(product, *values[i]);
+  return product;
 }
 
 }  // namespace
