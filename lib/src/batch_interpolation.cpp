@@ -39,7 +39,7 @@ constexpr std::size_t kLanes = 16;
     weight_b[i] = tasks[i].ratio;
   }
   for (std::size_t i = 0; i < count; ++i) {
-    if (y[i] <= kShortSeriesLimit) inverse_sinc[i] = 1.0 / horner<5>(kSinc, arc_squared[i]);
+    if (y[i] <= kShortSeriesLimit) inverse_sinc[i] = shortInverseSinc(arc_squared[i]);
   }
   for (std::size_t i = 0; i < count; ++i) {
     if (y[i] <= kShortSeriesLimit) {

@@ -36,6 +36,14 @@ constexpr double kSinc[] = {1.0,
                             -7.647163731819816e-13,
                             2.8114572543455206e-15};
 
+// Taylor coefficients of u/sin(u) in powers of u^2, so that short arcs need no division.
+constexpr double kInverseSinc[] = {1.0,
+                                   0.16666666666666666,
+                                   0.019444444444444445,
+                                   0.00205026455026455,
+                                   0.0002099867724867725,
+                                   2.1336045641601196e-05};
+
 // How many leading terms of each series are exact to double precision, for y up to a limit:
 // 5 and 5 up to an arc of 0.063 rad (y = 1e-3), 13 and 9 up to 0.5 rad (y = 0.0612).
 constexpr double kShortSeriesLimit = 1e-3;
@@ -50,6 +58,10 @@ inline double horner(const double (&coefficients)[N], double x) {
     return coefficients[I] + x * horner<Terms, N, I + 1>(coefficients, x);
   }
 }
+
+/// arc / sin(arc) from the squared arc, by the short series (arc_squared <= 4.01e-3, which
+/// y <= kShortSeriesLimit gives): the first omitted term is below 3e-17.
+inline double shortInverseSinc(double arc_squared) { return horner<5>(kInverseSinc, arc_squared); }
 
 /// The squared arc, from y, by the short series (y <= kShortSeriesLimit).
 inline double shortArcSquared(double y) { return 4.0 * y * horner<5>(kAsinSquared, y); }
@@ -76,7 +88,7 @@ inline double signedArcSquared(const Eigen::Quaterniond& a, const Eigen::Quatern
 inline void slerpWeights(double y, double& weight_a, double& weight_b) {
   if (y <= kShortSeriesLimit) {
     const double arc_squared = shortArcSquared(y);
-    const double inverse_sinc = 1.0 / horner<5>(kSinc, arc_squared);
+    const double inverse_sinc = shortInverseSinc(arc_squared);
     weight_a = shortSeriesWeight(weight_a, arc_squared, inverse_sinc);
     weight_b = shortSeriesWeight(weight_b, arc_squared, inverse_sinc);
   } else if (y <= kLongSeriesLimit) {
