@@ -32,30 +32,42 @@ class FrameNameIndex {
     ++count_;
   }
 
-  // Independent multiplies of 8-byte words (the last one overlapping the one before, so no
-  // word is read byte by byte), so that a name's words mix at once rather than in sequence.
+  // Independent multiplies of 8-byte words (overlapping where the size is not a multiple of 8,
+  // so no word is read byte by byte), so that a name's words mix at once rather than in
+  // sequence. Names of up to 32 bytes, nearly all of them, take a fixed number of words.
   static std::uint64_t hashOf(std::string_view name) {
-    constexpr std::uint64_t kMultiplier = 0x9e3779b97f4a7c15ull;
-    constexpr std::uint64_t kSeed = 0xa0761d6478bd642full;
     const std::size_t size = name.size();
-    std::uint64_t hash = size * kMultiplier;
-    if (size < 8) return finish(hash + mix(tail(name.data(), size), kSeed));
-    // Each word's seed depends on its place, so that words trading places change the hash.
-    for (std::size_t offset = 0; offset + 8 < size; offset += 8) {
-      hash += mix(word(name.data() + offset), kSeed + offset * kMultiplier);
+    const char* bytes = name.data();
+    const std::uint64_t hash = size * kMultiplier;
+    if (size <= 8) return finish(hash + mix(shortWord(bytes, size), kSeed));
+    const std::uint64_t ends = mix(word(bytes), kSeed) + mix(word(bytes + size - 8), ~kSeed);
+    if (size <= 16) return finish(hash + ends);
+    if (size <= 32) {
+      return finish(hash + ends + mix(word(bytes + 8), kSeed + kMultiplier) +
+                    mix(word(bytes + size - 16), kSeed - kMultiplier));
     }
-    return finish(hash + mix(word(name.data() + size - 8), ~kSeed));
+    // Each word's seed depends on its place, so that words trading places change the hash.
+    std::uint64_t middle = 0;
+    for (std::size_t offset = 8; offset + 8 < size; offset += 8) {
+      middle += mix(word(bytes + offset), kSeed + offset * kMultiplier);
+    }
+    return finish(hash + ends + middle);
   }
 
   /// Equality of two names of equal size, inline: names are short, and a call to memcmp costs
   /// more than comparing them.
   static bool sameBytes(const char* a, const char* b, std::size_t size) {
-    if (size < 8) return tail(a, size) == tail(b, size);
-    std::uint64_t differ = 0;
-    for (std::size_t offset = 0; offset + 8 < size; offset += 8) {
+    if (size <= 8) return shortWord(a, size) == shortWord(b, size);
+    std::uint64_t differ = (word(a) ^ word(b)) | (word(a + size - 8) ^ word(b + size - 8));
+    if (size <= 16) return differ == 0;
+    if (size <= 32) {
+      differ |= (word(a + 8) ^ word(b + 8)) | (word(a + size - 16) ^ word(b + size - 16));
+      return differ == 0;
+    }
+    for (std::size_t offset = 8; offset + 8 < size; offset += 8) {
       differ |= word(a + offset) ^ word(b + offset);
     }
-    return (differ | (word(a + size - 8) ^ word(b + size - 8))) == 0;
+    return differ == 0;
   }
 
  private:
@@ -64,11 +76,24 @@ class FrameNameIndex {
     std::memcpy(&value, bytes, 8);
     return value;
   }
-  static std::uint64_t tail(const char* bytes, std::size_t size) {
-    std::uint64_t value = 0;
-    std::memcpy(&value, bytes, size);
-    return value;
+  // Up to 8 bytes as one word, from at most two overlapping reads, without a call to memcpy.
+  static std::uint64_t shortWord(const char* bytes, std::size_t size) {
+    if (size >= 4) {
+      std::uint32_t low;
+      std::uint32_t high;
+      std::memcpy(&low, bytes, 4);
+      std::memcpy(&high, bytes + size - 4, 4);
+      return (std::uint64_t{high} << 32) | low;
+    }
+    if (size == 0) return 0;
+    const auto byte = [&](std::size_t i) {
+      return std::uint64_t{static_cast<unsigned char>(bytes[i])};
+    };
+    return byte(0) | byte(size / 2) << 8 | byte(size - 1) << 16;
   }
+  static constexpr std::uint64_t kMultiplier = 0x9e3779b97f4a7c15ull;
+  static constexpr std::uint64_t kSeed = 0xa0761d6478bd642full;
+
   static std::uint64_t finish(std::uint64_t hash) {
     hash = (hash ^ (hash >> 32)) * 0xbf58476d1ce4e5b9ull;
     return hash ^ (hash >> 31);

@@ -1,0 +1,62 @@
+#include "frame_name_index.hpp"
+
+#include <gtest/gtest.h>
+
+#include <deque>
+#include <random>
+#include <string>
+
+namespace lcmtf::detail {
+namespace {
+
+// Names of every length from one byte to well past the longest fixed-size case, with bytes of
+// every value, each stored under its own id. (Frame names are never empty.)
+class NameIndex : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::mt19937_64 random(11);
+    std::uniform_int_distribution<int> byte(0, 255);
+    for (std::size_t size = 1; size <= 80; ++size) {
+      for (int copy = 0; copy < 3; ++copy) {
+        std::string name(size, '\0');
+        for (char& c : name) c = static_cast<char>(byte(random));
+        names.push_back(name);
+        index.insert(names.back(), static_cast<FrameId>(names.size()));
+      }
+    }
+  }
+
+  std::deque<std::string> names;  // stable storage, as the index requires
+  FrameNameIndex index;
+};
+
+TEST_F(NameIndex, EveryNameIsFoundUnderItsId) {
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    EXPECT_EQ(index.find(std::string(names[i])), static_cast<FrameId>(i + 1))
+        << "name of " << names[i].size() << " bytes";
+  }
+}
+
+TEST_F(NameIndex, NameDifferingInAnyOneByteIsNotFound) {
+  for (const std::string& name : names) {
+    for (std::size_t at = 0; at < name.size(); ++at) {
+      std::string other = name;
+      other[at] = static_cast<char>(other[at] ^ 0x20);
+      EXPECT_EQ(index.find(other), kNoFrame) << "byte " << at << " of " << name.size();
+    }
+  }
+}
+
+TEST_F(NameIndex, PrefixesAndExtensionsOfANameAreNotFound) {
+  for (const std::string& name : names) {
+    if (name.size() > 1) {
+      EXPECT_EQ(index.find(std::string_view(name).substr(0, name.size() - 1)), kNoFrame);
+    }
+    EXPECT_EQ(index.find(name + "x"), kNoFrame);
+  }
+}
+
+TEST(NameIndexEmpty, FindsNothing) { EXPECT_EQ(FrameNameIndex().find("map"), kNoFrame); }
+
+}  // namespace
+}  // namespace lcmtf::detail
