@@ -13,6 +13,8 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "lcmtf/buffer.hpp"
+#include "lcmtf/channels.hpp"
+#include "lcmtf/resend_request_t.hpp"
 #include "lcmtf/transform_listener.hpp"
 #include "support/test_lcm.hpp"
 #include "support/tool_process.hpp"
@@ -307,14 +309,36 @@ TEST(MonitorProcess, ContinuousModeReportsEachWindowUntilStopped) {
   EXPECT_NEAR(std::stod(window[1]), 0.4, 0.1) << last_full_report;
 }
 
+// Waits for a request for static transforms from a program whose name starts `program`: a
+// tool asks once it has subscribed to everything, so what is sent after reaches it.
+bool waitForStaticRequest(lcm::LCM& lcm, const std::string& program,
+                          std::chrono::milliseconds timeout) {
+  struct Seen {
+    std::string program;
+    bool found = false;
+  } seen{program};
+  auto onRequest = [](const lcm::ReceiveBuffer*, const std::string&,
+                      const resend_request_t* request, Seen* context) {
+    context->found = context->found || request->requester.rfind(context->program, 0) == 0;
+  };
+  lcm::Subscription* subscription =
+      lcm.subscribeFunction<resend_request_t, Seen*>(kTfStaticRequestChannel, onRequest, &seen);
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (!seen.found && std::chrono::steady_clock::now() < deadline) lcm.handleTimeout(50);
+  lcm.unsubscribe(subscription);
+  return seen.found;
+}
+
 TEST(MonitorProcess, HostileInputIsCountedAndDescribedWhileGoodTrafficIsReported) {
   const std::string url = testUrl();
   auto odom = publisher(url, "odometry", 50, "odom", "base");
-  ToolProcess monitor(LCMTF_MONITOR_PATH, {"--lcm-url", url, "--duration", "1.5"});
   ToolProcess echo(LCMTF_ECHO_PATH, {"--lcm-url", url, "--rate", "20", "odom", "base"});
   ASSERT_TRUE(echo.waitForStdout("'base' in 'odom'", 5s)) << echo.stderrText();
-
   lcm::LCM lcm(url);
+  // The hostile messages go out once the monitor listens, well inside its window.
+  ToolProcess monitor(LCMTF_MONITOR_PATH, {"--lcm-url", url, "--duration", "1.5"});
+  ASSERT_TRUE(waitForStaticRequest(lcm, "lcmtf-monitor", 5s)) << monitor.stderrText();
+
   const std::uint8_t garbage[] = {0xde, 0xad, 0xbe, 0xef, 1, 2, 3, 4, 5, 6, 7, 8, 9};
   tf_message_t nan_batch{};
   nan_batch.authority = "broken-driver";
