@@ -122,7 +122,10 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
       any_dynamic = true;
     }
     for (std::size_t i = 0; i < count; ++i) {
-      if (steps[i].cache && at < steps[i].cache->oldestStamp()) return false;
+      QuickStep& step = steps[i];
+      if (!step.cache) continue;
+      if (at < step.cache->oldestStamp()) return false;
+      step.hint = step.cache->hintNearNewest(at);
     }
   }
   if (value) {

@@ -102,6 +102,12 @@ class TimeCache {
   /// Starts loading the samples find(stamp) will read, so several edges load at once; returns
   /// where it guessed they are, as a hint for find().
   std::size_t prefetch(std::int64_t stamp, bool anchored = false) const;
+  /// A hint for find() at a time near the newest sample (as latest-common-time lookups ask):
+  /// the sample before the newest when `stamp` falls after it, else none.
+  std::size_t hintNearNewest(std::int64_t stamp) const {
+    return count_ >= 2 && stamp < newest_stamp_ && stampAt(count_ - 2) <= stamp ? count_ - 2
+                                                                                : kNoHint;
+  }
   static constexpr std::size_t kNoHint = static_cast<std::size_t>(-1);
 
  private:
