@@ -34,7 +34,6 @@ const char* describe(InsertRejection kind) {
 BufferCore::Impl::Impl(Duration cache_time)
     : cache_time_(cache_time.count()),
       reporter_([](const std::string& message) { std::cerr << "lcmtf: " << message << '\n'; }) {
-  names_.emplace_back();
   frames_.emplace_back();  // id 0: no frame
 }
 
@@ -43,7 +42,7 @@ FrameId BufferCore::Impl::idOf(std::string_view name) const { return ids_.find(n
 FrameId BufferCore::Impl::addFrame(std::string_view name) {
   const FrameId existing = idOf(name);
   if (existing != kNoFrame) return existing;
-  const std::string& stored = names_.emplace_back(name);
+  const std::string_view stored = names_.store(name);
   const auto id = static_cast<FrameId>(frames_.size());
   const FrameRecord* before = frames_.data();
   FrameRecord& record = frames_.emplace_back();

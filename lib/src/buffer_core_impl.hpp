@@ -1,7 +1,6 @@
 #pragma once
 
 #include <atomic>
-#include <deque>
 #include <functional>
 #include <map>
 #include <mutex>
@@ -13,6 +12,7 @@
 #include "frame_name_index.hpp"
 #include "frame_record.hpp"
 #include "lcmtf/buffer_core.hpp"
+#include "name_arena.hpp"
 #include "read_mostly_lock.hpp"
 #include "root_paths.hpp"
 #include "time_cache.hpp"
@@ -131,7 +131,7 @@ class BufferCore::Impl {
 
   mutable detail::ReadMostlyLock lock_;
   const std::int64_t cache_time_;
-  std::deque<std::string> names_;  // stable storage behind FrameRecord::name
+  detail::NameArena names_;  // stable storage behind FrameRecord::name
   std::vector<FrameRecord> frames_;
   detail::FrameNameIndex ids_;
   RootPaths root_paths_;

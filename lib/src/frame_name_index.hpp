@@ -27,7 +27,8 @@ class FrameNameIndex {
   }
 
   void insert(std::string_view name, FrameId id) {
-    if (2 * (count_ + 1) > slots_.size()) grow();
+    // At most a quarter full, so that most names are found at the first slot tried.
+    if (4 * (count_ + 1) > slots_.size()) grow();
     place(Slot{hashOf(name), name, id});
     ++count_;
   }
