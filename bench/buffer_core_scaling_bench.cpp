@@ -1,6 +1,7 @@
 // Lookup cost against the size of the tree and the length of the history, with the path
 // itself fixed: 15 edges from the leaf to the root, 5 of them dynamic at 100 Hz. The cost
-// should follow the path, not the tree or the history.
+// should follow the path, not the tree or the history. Also the cost of adding a frame, one
+// edge at a time, against the number of frames already there.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -66,8 +67,28 @@ void lookupAlongFixedPath(benchmark::State& state) {
   }
 }
 
+// A tree of `frames` frames built one static edge at a time, each new frame under a random one
+// already there; the time per edge added.
+void addFramesOneByOne(benchmark::State& state) {
+  const auto frames = static_cast<int>(state.range(0));
+  std::vector<std::string> names{"map"};
+  for (int i = 1; i < frames; ++i) names.push_back("frame_" + std::to_string(i));
+  for (auto _ : state) {
+    lcmtf::BufferCore buffer;
+    std::mt19937 random(9);
+    for (int i = 1; i < frames; ++i) {
+      const std::string& parent =
+          names[static_cast<std::size_t>(random()) % static_cast<std::size_t>(i)];
+      buffer.setTransform({{}, parent, names[static_cast<std::size_t>(i)], wobble(i)}, "bench",
+                          true);
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * (frames - 1));
+}
+
 }  // namespace
 
+BENCHMARK(addFramesOneByOne)->ArgName("frames")->Arg(100)->Arg(1000)->Arg(10000);
 BENCHMARK(lookupAlongFixedPath)
     ->ArgNames({"frames", "history_s"})
     ->Args({100, 10})

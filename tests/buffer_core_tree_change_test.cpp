@@ -4,6 +4,7 @@
 // model's answer, composed here edge by edge.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <random>
@@ -96,8 +97,8 @@ class TreeChanges : public ::testing::Test {
   BufferCore buffer;
   TreeModel model;
   std::mt19937_64 random{7};
-  const std::vector<std::string> names{"map",  "odom", "base",   "torso", "arm",
-                                       "hand", "tip",  "camera", "lens",  "cup"};
+  std::vector<std::string> names{"map",  "odom", "base",   "torso", "arm",
+                                 "hand", "tip",  "camera", "lens",  "cup"};
 
   Eigen::Isometry3d randomPose() {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -210,6 +211,27 @@ TEST_F(TreeChanges, ClearLeavesTheStaticEdgesToLookUp) {
   expectLookupsMatchTheModel("cleared");
   setEdge("map", "base", false);
   expectLookupsMatchTheModel("base under map after the clear");
+}
+
+TEST_F(TreeChanges, TreeGrownEdgeByEdgeInAnyOrderIsLookedUpRight) {
+  // A random tree of 40 frames whose edges arrive shuffled, children often before parents.
+  names.clear();
+  std::vector<std::pair<std::string, std::string>> edges;
+  for (int frame = 0; frame < 40; ++frame) {
+    names.push_back("link_" + std::to_string(frame));
+    if (frame == 0) continue;
+    const int parent =
+        std::uniform_int_distribution<int>(std::max(0, frame - 6), frame - 1)(random);
+    edges.emplace_back(names[static_cast<std::size_t>(parent)], names.back());
+  }
+  std::shuffle(edges.begin(), edges.end(), random);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    setEdge(edges[i].first, edges[i].second, i % 3 == 0);
+    if (i % 4 == 3 || i + 1 == edges.size()) {
+      expectLookupsMatchTheModel("after edge " + std::to_string(i));
+    }
+    if (HasFailure()) break;
+  }
 }
 
 TEST_F(TreeChanges, RandomChangesKeepEveryLookupRight) {

@@ -44,10 +44,7 @@ FrameId BufferCore::Impl::addFrame(std::string_view name) {
   if (existing != kNoFrame) return existing;
   const std::string_view stored = names_.store(name);
   const auto id = static_cast<FrameId>(frames_.size());
-  const FrameRecord* before = frames_.data();
   FrameRecord& record = frames_.emplace_back();
-  // The root paths point into the frames.
-  root_paths_stale_ = root_paths_stale_ || frames_.data() != before;
   record.name = stored;
   record.static_top = id;
   ids_.insert(stored, id);
@@ -167,10 +164,16 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
         record.cache.staticValue().transform.translation == value.translation &&
         record.cache.staticValue().transform.rotation.coeffs() == value.rotation.coeffs();
     if (!unchanged) {
-      root_paths_stale_ =
-          root_paths_stale_ || !was_static || record.cache.staticValue().parent != parent_id;
+      if (!was_static || record.cache.staticValue().parent != parent_id) noteShapeChange(child_id);
       record.cache.setStatic(parent_id, value);
-      updateStaticChains();
+      if (known_child == kNoFrame) {
+        // A frame new to the buffer has nothing below it: only its own chain is new.
+        const FrameRecord& above = frames_[parent_id];
+        record.static_top = above.static_top;
+        record.static_top_T_frame = above.static_top_T_frame * value;
+      } else {
+        updateStaticChains();
+      }
     }
   } else {
     const FrameId parent_before = record.cache.newestParent();
@@ -179,8 +182,7 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
       ++statistics_.replaced;
     }
     if (was_static) updateStaticChains();
-    root_paths_stale_ =
-        root_paths_stale_ || was_static || record.cache.newestParent() != parent_before;
+    if (was_static || record.cache.newestParent() != parent_before) noteShapeChange(child_id);
   }
   const std::uint32_t authority_id = authorityId(authority);
   if (record.authority != 0 && record.authority != authority_id) {

@@ -94,11 +94,20 @@ class BufferCore::Impl {
   /// of the edges into frames whose chain changed (exclusive lock).
   void updateStaticChains();
   void computeStaticChains();
-  /// Rebuilds the root paths when the tree's shape has changed since (exclusive lock).
+  /// Brings the root paths up to date (exclusive lock): rebuilt when a frame they know has
+  /// changed its edge, extended when only new frames have come.
   void refreshRootPaths() {
-    if (!root_paths_stale_) return;
-    root_paths_.rebuild(frames_);
-    root_paths_stale_ = false;
+    if (root_paths_stale_ || !root_paths_.canExtendTo(frames_)) {
+      root_paths_.rebuild(frames_);
+      root_paths_stale_ = false;
+    } else if (root_paths_.frameCount() < frames_.size()) {
+      root_paths_.extend(frames_);
+    }
+  }
+  /// Notes that `frame`'s edge has changed the tree's shape: a frame the root paths know
+  /// means rebuilding them; a newer one gets its path when they are extended.
+  void noteShapeChange(FrameId frame) {
+    if (frame < root_paths_.frameCount()) root_paths_stale_ = true;
   }
   /// The stamps [oldest, newest] at which every dynamic edge between the frames has data, with
   /// the tree as it stands at its newest samples; both zero when every edge is static.

@@ -30,10 +30,11 @@ struct TransformRoom {
   alignas(Transform) unsigned char bytes[sizeof(Transform)];
 };
 
-// Where each path's last step crosses the static chain the other path crosses as well (or
-// is), the edges' own values are used and the chain left out: a lookup of a dynamic edge's
-// child in its parent then gives the stored samples themselves, not with the chain applied
-// and taken off again.
+// Where two paths meet: how many steps of each are taken, and whether each one's last step
+// is anchored. Where each path's last step crosses the static chain the other path crosses
+// as well (or is), the edges' own values are used and the chain left out: a lookup of a
+// dynamic edge's child in its parent then gives the stored samples themselves, not with the
+// chain applied and taken off again.
 struct MeetingPoint {
   std::size_t source_count;
   std::size_t target_count;

@@ -1,5 +1,7 @@
 #include "root_paths.hpp"
 
+#include <algorithm>
+
 namespace lcmtf {
 
 RootStep stepFrom(const std::vector<FrameRecord>& frames, FrameId frame) {
@@ -29,41 +31,57 @@ RootStep stepFrom(const std::vector<FrameRecord>& frames, FrameId frame) {
 // reaches, so frames are settled from the top down: a climb stops at the first frame whose
 // path is known, or at a root, and the frames it passed are filled in on the way back.
 void RootPaths::rebuild(const std::vector<FrameRecord>& frames) {
-  enum class State : std::uint8_t { kUnseen, kClimbing, kDone };
-  std::vector<State> state(frames.size(), State::kUnseen);
-  std::vector<RootStep> own(frames.size());
-  entries_.assign(frames.size(), Entry{});
+  entries_.clear();
   steps_.clear();
   built_for_ = frames.data();
+  settleFrom(frames, 1);
+}
+
+void RootPaths::extend(const std::vector<FrameRecord>& frames) {
+  settleFrom(frames, static_cast<FrameId>(std::max<std::size_t>(entries_.size(), 1)));
+}
+
+void RootPaths::settleFrom(const std::vector<FrameRecord>& frames, FrameId first) {
+  enum class State : std::uint8_t { kUnseen, kClimbing, kDone };
+  const std::size_t added = frames.size() > first ? frames.size() - first : 0;
+  // Only the frames being settled need a state and a step here.
+  std::vector<State> settling(added, State::kUnseen);
+  std::vector<RootStep> own(added);
+  const auto state = [&](FrameId frame) -> State {
+    return frame < first ? State::kDone : settling[frame - first];
+  };
+  entries_.resize(frames.size());
   std::vector<FrameId> climb;
-  for (FrameId start = 1; start < frames.size(); ++start) {
+  for (FrameId start = first; start < frames.size(); ++start) {
     FrameId frame = start;
-    while (state[frame] == State::kUnseen) {
-      state[frame] = State::kClimbing;
+    while (state(frame) == State::kUnseen) {
+      settling[frame - first] = State::kClimbing;
       climb.push_back(frame);
-      own[frame] = stepFrom(frames, frame);
-      if (own[frame].next == kNoFrame) break;
-      frame = own[frame].next;
+      own[frame - first] = stepFrom(frames, frame);
+      if (own[frame - first].next == kNoFrame) break;
+      frame = own[frame - first].next;
     }
     // Reaching a frame of this same climb again means a loop: no frame of the climb has a root.
-    const bool looped = state[frame] == State::kClimbing && own[frame].next != kNoFrame;
+    const bool looped = state(frame) == State::kClimbing && own[frame - first].next != kNoFrame;
     for (auto it = climb.rbegin(); it != climb.rend(); ++it) {
       const FrameId child = *it;
-      state[child] = State::kDone;
+      const RootStep& step = own[child - first];
+      settling[child - first] = State::kDone;
       Entry& entry = entries_[child];
+      entry = Entry{};
       if (looped) continue;
       entry.offset = static_cast<std::uint32_t>(steps_.size());
       entry.usable = true;
-      if (own[child].next == kNoFrame) {
+      if (step.next == kNoFrame) {
         entry.root = child;
         continue;
       }
-      const Entry above = entries_[own[child].next];
-      if (!above.usable) {
+      const Entry above = entries_[step.next];
+      if (!above.usable || above.size + 1 > kLongestPath) {
         entry.usable = false;
         continue;
       }
-      steps_.push_back(own[child]);
+      steps_.push_back(step);
       for (std::uint32_t i = 0; i < above.size; ++i) {
         const RootStep copy = steps_[above.offset + i];
         steps_.push_back(copy);

@@ -27,6 +27,9 @@ RootStep stepFrom(const std::vector<FrameRecord>& frames, FrameId frame);
 /// edge appears, changes parent or changes between static and dynamic.
 class RootPaths {
  public:
+  /// Longer paths are not kept: frames deeper than this are looked up by the walk.
+  static constexpr std::uint32_t kLongestPath = 64;
+
   struct Path {
     const RootStep* steps = nullptr;  // from the frame up; steps[size - 1] ends at `root`
     std::uint32_t size = 0;
@@ -34,9 +37,19 @@ class RootPaths {
   };
 
   void rebuild(const std::vector<FrameRecord>& frames);
+  /// Adds the paths of the frames added since the last rebuild or extension, when no frame
+  /// known then has changed its edge and the frames have not moved: in time proportional to
+  /// the new frames' paths rather than to every frame's.
+  void extend(const std::vector<FrameRecord>& frames);
+  /// Whether extend() can bring the paths up to date with `frames`.
+  bool canExtendTo(const std::vector<FrameRecord>& frames) const {
+    return frames.data() == built_for_;
+  }
+  /// How many frames have paths (or are known to have none).
+  std::size_t frameCount() const { return entries_.size(); }
   /// The path up from `frame` of `frames`, or false when there is none to trust: a frame added
-  /// since the last rebuild, one on or below a loop, or frames that have moved since (the
-  /// steps point into them).
+  /// since the last rebuild, one on or below a loop or deeper than kLongestPath steps, or
+  /// frames that have moved since (the steps point into them).
   bool find(const std::vector<FrameRecord>& frames, FrameId frame, Path& path) const {
     if (frames.data() != built_for_ || frame >= entries_.size() || !entries_[frame].usable) {
       return false;
@@ -53,6 +66,9 @@ class RootPaths {
     FrameId root = kNoFrame;
     bool usable = false;
   };
+
+  /// Works out the paths of frames `first` on; the frames before have theirs.
+  void settleFrom(const std::vector<FrameRecord>& frames, FrameId first);
 
   std::vector<RootStep> steps_;
   std::vector<Entry> entries_;
