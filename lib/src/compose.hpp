@@ -16,12 +16,6 @@ inline Transform composed(const Transform& above, const Transform& below) {
                    above.rotation * below.rotation);
 }
 
-/// above * below, in place.
-inline void composeOnto(const Transform& above, Transform& below) {
-  below.translation = rotated(above.rotation, below.translation) + above.translation;
-  below.rotation = above.rotation * below.rotation;
-}
-
 /// above * below, in place of above.
 inline void composeUnder(Transform& above, const Transform& below) {
   above.translation += rotated(above.rotation, below.translation);

@@ -89,20 +89,17 @@ class TimeCache {
   FrameId newestParent() const { return newest_parent_; }
 
   /// The samples that give the edge's value at `stamp` (any stamp for a static edge).
-  /// `hint` is prefetch()'s answer for the same stamp, when the caller has it.
-  /// With `anchored`, the span points at anchored values.
-  SampleStatus find(std::int64_t stamp, SampleSpan& span, std::size_t hint = kNoHint,
-                    bool anchored = false) const;
+  SampleStatus find(std::int64_t stamp, SampleSpan& span) const;
   /// The parent at `stamp`, whether or not the edge has data there (then its nearest sample's
   /// parent), with the status find() would give; kNoFrame when the edge is empty.
   /// find() for a dynamic edge whose samples all have one parent and that has data at
   /// `stamp`, without checking either.
   SampleSpan spanWithin(std::int64_t stamp, std::size_t hint, bool anchored) const;
   FrameId parentAt(std::int64_t stamp, SampleStatus& status) const;
-  /// Starts loading the samples find(stamp) will read, so several edges load at once; returns
-  /// where it guessed they are, as a hint for find().
+  /// Starts loading the samples spanWithin(stamp) will read, so several edges load at once;
+  /// returns where it guessed they are, as a hint for spanWithin().
   std::size_t prefetch(std::int64_t stamp, bool anchored = false) const;
-  /// A hint for find() at a time near the newest sample (as latest-common-time lookups ask):
+  /// A hint for spanWithin() at a time near the newest sample (as latest-common-time lookups ask):
   /// the sample before the newest when `stamp` falls after it, else none.
   std::size_t hintNearNewest(std::int64_t stamp) const {
     return count_ >= 2 && stamp < newest_stamp_ && stampAt(count_ - 2) <= stamp ? count_ - 2
@@ -129,7 +126,7 @@ class TimeCache {
   void move(std::size_t from, std::size_t to);
   /// Works out the arc from sample `index` to the next one, when there is a next one.
   void refreshArc(std::size_t index);
-  std::size_t indexAtOrBefore(std::int64_t stamp, std::size_t hint = kNoHint) const;
+  std::size_t indexAtOrBefore(std::int64_t stamp) const;
   std::size_t searchNear(std::int64_t stamp, std::size_t guess) const;
   std::size_t guessIndex(std::int64_t stamp) const;
   void grow(std::int64_t cache_time);
@@ -205,12 +202,12 @@ inline std::size_t TimeCache::prefetch(std::int64_t stamp, bool anchored) const 
 }
 
 // The index of the newest sample at or before `stamp`, or count_ when every sample is newer.
-// The guess from even spacing (or the hint) is usually right.
-inline std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp, std::size_t hint) const {
+// The guess from even spacing is usually right.
+inline std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp) const {
   if (stamp < oldest_stamp_) return count_;
   const std::size_t last = count_ - 1;
   if (stamp >= newest_stamp_ || newest_stamp_ <= oldest_stamp_) return last;
-  const std::size_t guess = hint < last ? hint : guessIndex(stamp);
+  const std::size_t guess = guessIndex(stamp);
   if (stampAt(guess) <= stamp && stamp < stampAt(guess + 1)) return guess;
   return searchNear(stamp, guess);
 }
@@ -228,8 +225,7 @@ inline SampleSpan TimeCache::spanWithin(std::int64_t stamp, std::size_t hint, bo
                     newest_parent_, stamps_[slot(index)].arc_to_next};
 }
 
-inline SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span, std::size_t hint,
-                                    bool anchored) const {
+inline SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span) const {
   if (is_static_) {
     span = SampleSpan{&static_value_.transform, nullptr, 0.0, static_value_.parent};
     return SampleStatus::kOk;
@@ -237,10 +233,10 @@ inline SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span, std::s
   if (count_ == 0) return SampleStatus::kEmpty;
   if (stamp < oldest_stamp_) return SampleStatus::kPast;
   if (stamp > newest_stamp_) return SampleStatus::kFuture;
-  const std::size_t index = indexAtOrBefore(stamp, hint);
+  const std::size_t index = indexAtOrBefore(stamp);
   const std::int64_t older_stamp = stampAt(index);
   const FrameId parent = hasSingleParent() ? newest_parent_ : parentOf(index);
-  const TransformRing& transforms = ring(anchored);
+  const TransformRing& transforms = transforms_;
   if (older_stamp == stamp || (!hasSingleParent() && parentOf(index + 1) != parent)) {
     span = SampleSpan{&transforms[slot(index)], nullptr, 0.0, parent};
     return SampleStatus::kOk;
