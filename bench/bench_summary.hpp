@@ -12,7 +12,7 @@
 namespace bench {
 
 // Prints runs as the console reporter does and keeps each benchmark's time and counters: the
-// median when repeated, else the last run.
+// median when repeated, else the fastest of the runs registered under that name.
 class RecordingReporter : public benchmark::ConsoleReporter {
  public:
   struct Result {
@@ -29,7 +29,9 @@ class RecordingReporter : public benchmark::ConsoleReporter {
       if (run.error_occurred || (run.run_type == Run::RT_Aggregate && !median)) continue;
       std::string name = run.run_name.function_name;
       if (!run.run_name.args.empty()) name += "/" + run.run_name.args;
-      results_[name] = Result{run.GetAdjustedRealTime(), run.counters};
+      const Result result{run.GetAdjustedRealTime(), run.counters};
+      const auto [kept, first] = results_.try_emplace(name, result);
+      if (!first && (median || result.real_time < kept->second.real_time)) kept->second = result;
     }
   }
 
@@ -69,7 +71,8 @@ inline void printSummary(const RecordingReporter& reporter) {
     const RecordingReporter::Result* result = reporter.find(name);
     return result ? result->real_time : NAN;
   };
-  std::printf("\n%-38s %10s %10s %10s %8s\n", "ns per call", "lcmtf", "tf2", "tf2/lcmtf", "target");
+  std::printf("\n%-38s %10s %10s %10s %8s\n", "ns per call (fastest round)", "lcmtf", "tf2",
+              "tf2/lcmtf", "target");
   for (const Row& row : kRows) {
     const double ours = time(std::string("lcmtf/") + row.ours);
     const double theirs = time(std::string("tf2/") + row.theirs);
