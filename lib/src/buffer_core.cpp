@@ -324,9 +324,10 @@ TransformStamped BufferCore::lookupTransform(const std::string& target, const st
   FrameId source_id = kNoFrame;
   std::int64_t stamp = toUtime(time);
   Transform value;
-  LookupFailure failure = impl_->resolve(target, "target", target_id);
-  if (!failure) failure = impl_->resolve(source, "source", source_id);
-  if (!failure) failure = impl_->lookup(target_id, source_id, stamp, &value);
+  // Each failure in a variable of its own: see resolvePair().
+  const LookupFailure unresolved = impl_->resolvePair(target, source, target_id, source_id);
+  if (unresolved) impl_->raise(unresolved, lookupWhat(target, source));
+  const LookupFailure failure = impl_->lookup(target_id, source_id, stamp, &value);
   if (failure) impl_->raise(failure, lookupWhat(target, source));
   return impl_->stamped(target_id, source_id, stamp, value);
 }
@@ -377,18 +378,19 @@ TransformStamped BufferCore::lookupTransform(const std::string& target, TimePoin
   FrameId target_id = kNoFrame;
   FrameId source_id = kNoFrame;
   FrameId fixed_id = kNoFrame;
-  LookupFailure failure = impl_->resolve(target, "target", target_id);
-  if (!failure) failure = impl_->resolve(source, "source", source_id);
-  if (!failure) failure = impl_->resolve(fixed, "fixed", fixed_id);
-  if (failure) impl_->raise(failure, timeTravelWhat(target, source, fixed));
+  const LookupFailure unresolved =
+      impl_->resolveAll(target, source, fixed, target_id, source_id, fixed_id);
+  if (unresolved) impl_->raise(unresolved, timeTravelWhat(target, source, fixed));
   std::int64_t source_stamp = toUtime(source_time);
   std::int64_t target_stamp = toUtime(target_time);
   Transform fixed_T_source;
   Transform target_T_fixed;
-  failure = impl_->lookup(fixed_id, source_id, source_stamp, &fixed_T_source);
-  if (failure) impl_->raise(failure, lookupWhat(fixed, source));
-  failure = impl_->lookup(target_id, fixed_id, target_stamp, &target_T_fixed);
-  if (failure) impl_->raise(failure, lookupWhat(target, fixed));
+  const LookupFailure source_failure =
+      impl_->lookup(fixed_id, source_id, source_stamp, &fixed_T_source);
+  if (source_failure) impl_->raise(source_failure, lookupWhat(fixed, source));
+  const LookupFailure target_failure =
+      impl_->lookup(target_id, fixed_id, target_stamp, &target_T_fixed);
+  if (target_failure) impl_->raise(target_failure, lookupWhat(target, fixed));
   return impl_->stamped(target_id, source_id, target_stamp,
                         detail::composed(target_T_fixed, fixed_T_source));
 }
@@ -399,10 +401,13 @@ bool BufferCore::canTransform(const std::string& target, const std::string& sour
   if (sameFrame(target, source)) return true;
   FrameId target_id = kNoFrame;
   FrameId source_id = kNoFrame;
-  LookupFailure failure = impl_->resolve(target, "target", target_id);
-  if (!failure) failure = impl_->resolve(source, "source", source_id);
+  const LookupFailure unresolved = impl_->resolvePair(target, source, target_id, source_id);
+  if (unresolved) {
+    if (why) *why = impl_->describe(unresolved, lookupWhat(target, source));
+    return false;
+  }
   std::int64_t stamp = toUtime(time);
-  if (!failure) failure = impl_->lookup(target_id, source_id, stamp, nullptr);
+  const LookupFailure failure = impl_->lookup(target_id, source_id, stamp, nullptr);
   if (failure && why) *why = impl_->describe(failure, lookupWhat(target, source));
   return !failure;
 }
@@ -429,7 +434,11 @@ bool BufferCore::canTransform(const std::string& target, TimePoint target_time,
                               const std::string& fixed, std::string* why) const {
   {
     SharedLock lock(impl_->lock_);
-    const LookupFailure failure = impl_->resolveAll(target, source, fixed);
+    FrameId target_id = kNoFrame;
+    FrameId source_id = kNoFrame;
+    FrameId fixed_id = kNoFrame;
+    const LookupFailure failure =
+        impl_->resolveAll(target, source, fixed, target_id, source_id, fixed_id);
     if (failure) {
       if (why) *why = impl_->describe(failure, timeTravelWhat(target, source, fixed));
       return false;

@@ -114,9 +114,13 @@ class BufferCore::Impl {
   LookupFailure commonTimeRange(FrameId target, FrameId source, std::int64_t& oldest,
                                 std::int64_t& newest) const;
   LookupFailure resolve(const std::string& name, const char* role, FrameId& id) const;
+  /// The two frames of a lookup, each named by its role when unknown.
+  LookupFailure resolvePair(const std::string& target, const std::string& source,
+                            FrameId& target_id, FrameId& source_id) const;
   /// The three frames of a time-travel lookup, each named by its role when unknown.
   LookupFailure resolveAll(const std::string& target, const std::string& source,
-                           const std::string& fixed) const;
+                           const std::string& fixed, FrameId& target_id, FrameId& source_id,
+                           FrameId& fixed_id) const;
   std::string describe(const LookupFailure& failure, const std::string& what) const;
   [[noreturn]] void raise(const LookupFailure& failure, const std::string& what) const;
 

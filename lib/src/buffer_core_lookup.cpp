@@ -286,13 +286,21 @@ LookupFailure BufferCore::Impl::resolve(const std::string& name, const char* rol
   return failure;
 }
 
+// A failure is returned straight from resolve(), never assigned over another: copying the whole
+// record a call has just written, field by field, stalls the processor on each copy.
+LookupFailure BufferCore::Impl::resolvePair(const std::string& target, const std::string& source,
+                                            FrameId& target_id, FrameId& source_id) const {
+  if (const LookupFailure failure = resolve(target, "target", target_id)) return failure;
+  return resolve(source, "source", source_id);
+}
+
 LookupFailure BufferCore::Impl::resolveAll(const std::string& target, const std::string& source,
-                                           const std::string& fixed) const {
-  FrameId id = kNoFrame;
-  LookupFailure failure = resolve(target, "target", id);
-  if (!failure) failure = resolve(source, "source", id);
-  if (!failure) failure = resolve(fixed, "fixed", id);
-  return failure;
+                                           const std::string& fixed, FrameId& target_id,
+                                           FrameId& source_id, FrameId& fixed_id) const {
+  if (const LookupFailure failure = resolvePair(target, source, target_id, source_id)) {
+    return failure;
+  }
+  return resolve(fixed, "fixed", fixed_id);
 }
 
 void BufferCore::Impl::updateStaticChains() {
