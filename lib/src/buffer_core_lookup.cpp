@@ -85,8 +85,11 @@ Transform pathValue(WalkScratch& s) {
     }
   }
   detail::interpolateBatch(s.tasks.data(), s.tasks.size());
-  return detail::pathProduct(s.values.data(), s.source_edges.size(),
-                             s.values.data() + s.source_edges.size(), s.target_edges.size());
+  Transform target_T_source;
+  detail::pathProduct(s.values.data(), s.source_edges.size(),
+                      s.values.data() + s.source_edges.size(), s.target_edges.size(),
+                      target_T_source);
+  return target_T_source;
 }
 
 // The first dynamic edge without data at `stamp` as a failure; fills the spans otherwise,

@@ -150,8 +150,8 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
       values[i] = out;
     }
     detail::interpolateBatch(tasks, task_count);
-    *value = detail::pathProduct(values, meeting.source_count, values + meeting.source_count,
-                                 meeting.target_count);
+    detail::pathProduct(values, meeting.source_count, values + meeting.source_count,
+                        meeting.target_count, *value);
   }
   stamp = at;
   return true;

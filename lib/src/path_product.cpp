@@ -20,17 +20,17 @@ namespace {
 
 }  // namespace
 
-LCMTF_WIDE_VECTORS Transform pathProduct(const Transform* const* up_from_source,
-                                         std::size_t source_count,
-                                         const Transform* const* up_from_target,
-                                         std::size_t target_count) {
+LCMTF_WIDE_VECTORS void pathProduct(const Transform* const* up_from_source,
+                                    std::size_t source_count,
+                                    const Transform* const* up_from_target,
+                                    std::size_t target_count, Transform& target_T_source) {
   const Transform ancestor_T_source = chainProduct(up_from_source, source_count);
   const Transform ancestor_T_target = chainProduct(up_from_target, target_count);
   // target_T_ancestor * ancestor_T_source, without forming the inverse.
   const Eigen::Quaterniond target_R_ancestor = ancestor_T_target.rotation.conjugate();
-  return Transform(
-      rotated(target_R_ancestor, ancestor_T_source.translation - ancestor_T_target.translation),
-      target_R_ancestor * ancestor_T_source.rotation);
+  target_T_source.translation =
+      rotated(target_R_ancestor, ancestor_T_source.translation - ancestor_T_target.translation);
+  target_T_source.rotation = target_R_ancestor * ancestor_T_source.rotation;
 }
 
 }  // namespace lcmtf::detail
