@@ -135,8 +135,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     const std::size_t index = indexAtOrBefore(sample.stamp);
     if (index < count_ && stampAt(index) == sample.stamp) {
       put(index, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
-      if (index > 0) refreshArc(index - 1);
-      refreshArc(index);
+      refreshArcsAround(index);
       noteParentChanges(index);
       refreshEnds();
       return InsertOutcome::kReplaced;
@@ -147,8 +146,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     for (std::size_t i = count_; i > insert_at; --i) move(i - 1, i);
     put(insert_at, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
     ++count_;
-    if (insert_at > 0) refreshArc(insert_at - 1);
-    refreshArc(insert_at);
+    refreshArcsAround(insert_at);
     noteParentChanges(insert_at);
     refreshEnds();
     return InsertOutcome::kAdded;

@@ -90,11 +90,12 @@ class TimeCache {
 
   /// The samples that give the edge's value at `stamp` (any stamp for a static edge).
   SampleStatus find(std::int64_t stamp, SampleSpan& span) const;
+  /// find() for a dynamic edge whose samples all have one parent and that has data at
+  /// `stamp`, without checking either; from `hint` (prefetch()'s answer) when it holds, and
+  /// in the anchored values when `anchored`.
+  SampleSpan spanWithin(std::int64_t stamp, std::size_t hint, bool anchored) const;
   /// The parent at `stamp`, whether or not the edge has data there (then its nearest sample's
   /// parent), with the status find() would give; kNoFrame when the edge is empty.
-  /// find() for a dynamic edge whose samples all have one parent and that has data at
-  /// `stamp`, without checking either.
-  SampleSpan spanWithin(std::int64_t stamp, std::size_t hint, bool anchored) const;
   FrameId parentAt(std::int64_t stamp, SampleStatus& status) const;
   /// Starts loading the samples spanWithin(stamp) will read, so several edges load at once;
   /// returns where it guessed they are, as a hint for spanWithin().
@@ -126,6 +127,22 @@ class TimeCache {
   void move(std::size_t from, std::size_t to);
   /// Works out the arc from sample `index` to the next one, when there is a next one.
   void refreshArc(std::size_t index);
+  /// refreshArc() on each side of a sample just stored at `index`.
+  void refreshArcsAround(std::size_t index) {
+    if (index > 0) refreshArc(index - 1);
+    refreshArc(index);
+  }
+  /// The span at `stamp` from sample `index` (at or before it) of `transforms`: that sample
+  /// alone when `exact`, else it and the next one.
+  SampleSpan spanFrom(std::size_t index, std::int64_t stamp, const TransformRing& transforms,
+                      FrameId parent, bool exact) const {
+    if (exact) return SampleSpan{&transforms[slot(index)], nullptr, 0.0, parent};
+    const std::int64_t older_stamp = stampAt(index);
+    return SampleSpan{&transforms[slot(index)], &transforms[slot(index + 1)],
+                      static_cast<double>(stamp - older_stamp) /
+                          static_cast<double>(stampAt(index + 1) - older_stamp),
+                      parent, stamps_[slot(index)].arc_to_next};
+  }
   std::size_t indexAtOrBefore(std::int64_t stamp) const;
   std::size_t searchNear(std::int64_t stamp, std::size_t guess) const;
   std::size_t guessIndex(std::int64_t stamp) const;
@@ -215,14 +232,7 @@ inline std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp) const {
 inline SampleSpan TimeCache::spanWithin(std::int64_t stamp, std::size_t hint, bool anchored) const {
   const bool hint_holds = hint != kNoHint && stampAt(hint) <= stamp && stamp < stampAt(hint + 1);
   const std::size_t index = hint_holds ? hint : indexAtOrBefore(stamp);
-  const std::int64_t older_stamp = stampAt(index);
-  const TransformRing& transforms = ring(anchored);
-  if (older_stamp == stamp)
-    return SampleSpan{&transforms[slot(index)], nullptr, 0.0, newest_parent_};
-  return SampleSpan{&transforms[slot(index)], &transforms[slot(index + 1)],
-                    static_cast<double>(stamp - older_stamp) /
-                        static_cast<double>(stampAt(index + 1) - older_stamp),
-                    newest_parent_, stamps_[slot(index)].arc_to_next};
+  return spanFrom(index, stamp, ring(anchored), newest_parent_, stampAt(index) == stamp);
 }
 
 inline SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span) const {
@@ -234,17 +244,11 @@ inline SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span) const 
   if (stamp < oldest_stamp_) return SampleStatus::kPast;
   if (stamp > newest_stamp_) return SampleStatus::kFuture;
   const std::size_t index = indexAtOrBefore(stamp);
-  const std::int64_t older_stamp = stampAt(index);
   const FrameId parent = hasSingleParent() ? newest_parent_ : parentOf(index);
-  const TransformRing& transforms = transforms_;
-  if (older_stamp == stamp || (!hasSingleParent() && parentOf(index + 1) != parent)) {
-    span = SampleSpan{&transforms[slot(index)], nullptr, 0.0, parent};
-    return SampleStatus::kOk;
-  }
-  span = SampleSpan{&transforms[slot(index)], &transforms[slot(index + 1)],
-                    static_cast<double>(stamp - older_stamp) /
-                        static_cast<double>(stampAt(index + 1) - older_stamp),
-                    parent, stamps_[slot(index)].arc_to_next};
+  // A parent change between the two samples keeps the older one unchanged, as tf does.
+  const bool exact =
+      stampAt(index) == stamp || (!hasSingleParent() && parentOf(index + 1) != parent);
+  span = spanFrom(index, stamp, transforms_, parent, exact);
   return SampleStatus::kOk;
 }
 
