@@ -168,9 +168,7 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
       record.cache.setStatic(parent_id, value);
       if (known_child == kNoFrame) {
         // A frame new to the buffer has nothing below it: only its own chain is new.
-        const FrameRecord& above = frames_[parent_id];
-        record.static_top = above.static_top;
-        record.static_top_T_frame = above.static_top_T_frame * value;
+        continueStaticChain(record, frames_[parent_id], value);
       } else {
         updateStaticChains();
       }

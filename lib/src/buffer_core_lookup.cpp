@@ -362,8 +362,7 @@ void BufferCore::Impl::computeStaticChains() {
         record.static_top = *it;
         record.static_top_T_frame = Transform::identity();
       } else {
-        record.static_top = parent.static_top;
-        record.static_top_T_frame = parent.static_top_T_frame * edge.transform;
+        continueStaticChain(record, parent, edge.transform);
       }
     }
     pending.clear();

@@ -24,6 +24,13 @@ struct FrameRecord {
   Transform static_top_T_frame;
 };
 
+/// Continues `parent`'s static chain through `record`'s static edge `parent_T_record`.
+inline void continueStaticChain(FrameRecord& record, const FrameRecord& parent,
+                                const Transform& parent_T_record) {
+  record.static_top = parent.static_top;
+  record.static_top_T_frame = parent.static_top_T_frame * parent_T_record;
+}
+
 /// What anchors the samples of the edges into `frame` (see TimeCache::reanchor): the static
 /// chain above it, or null when there is none.
 inline const Transform* anchorOf(const std::vector<FrameRecord>& frames, FrameId frame) {
