@@ -38,7 +38,6 @@ struct SampleSpan {
   double ratio = 0.0;
   FrameId parent = kNoFrame;
   double arc_squared = 0.0;  // signedArcSquared(older, newer) when `newer`
-  Transform value() const { return newer ? interpolate(*older, *newer, ratio) : *older; }
 };
 
 enum class InsertOutcome { kAdded, kReplaced, kTooOld };
@@ -99,7 +98,7 @@ class TimeCache {
   FrameId parentAt(std::int64_t stamp, SampleStatus& status) const;
   /// Starts loading the samples spanWithin(stamp) will read, so several edges load at once;
   /// returns where it guessed they are, as a hint for spanWithin().
-  std::size_t prefetch(std::int64_t stamp, bool anchored = false) const;
+  std::size_t prefetch(std::int64_t stamp, bool anchored) const;
   /// A hint for spanWithin() at a time near the newest sample (as latest-common-time lookups ask):
   /// the sample before the newest when `stamp` falls after it, else none.
   std::size_t hintNearNewest(std::int64_t stamp) const {
