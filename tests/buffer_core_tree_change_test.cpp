@@ -49,8 +49,10 @@ class TreeModel {
   }
 
   // target_T_source, or nothing when the frames are not connected or a loop is climbed before
-  // they meet. As in tf, the source climbs first and stops at the target if it reaches it.
+  // they meet. As in tf, the source climbs first and stops at the target if it reaches it, and
+  // a frame in itself is the identity.
   std::optional<Answer> lookup(const std::string& target, const std::string& source) const {
+    if (target == source) return Answer{Eigen::Isometry3d::Identity(), false};
     const auto up_from_source = climb(source, target);
     if (!up_from_source) return std::nullopt;
     const Step& top = up_from_source->back();
@@ -97,6 +99,7 @@ class TreeChanges : public ::testing::Test {
   BufferCore buffer;
   TreeModel model;
   std::mt19937_64 random{7};
+  std::size_t time_travel_checks = 0;
   std::vector<std::string> names{"map",  "odom", "base",   "torso", "arm",
                                  "hand", "tip",  "camera", "lens",  "cup"};
 
@@ -150,6 +153,40 @@ class TreeChanges : public ::testing::Test {
         const TransformStamped latest = buffer.lookupTransform(target, source, kLatestTime);
         EXPECT_TRUE(near(latest.transform, expected->value, kTolerance)) << what;
         EXPECT_EQ(latest.stamp, expected->any_dynamic ? at(kNewer) : kLatestTime) << what;
+      }
+    }
+    expectTimeTravelMatchesTheModel(after);
+  }
+
+  // Every ordered pair through a third of the frames as the fixed frame (another third after
+  // each change), the two halves at different times.
+  void expectTimeTravelMatchesTheModel(const std::string& after) {
+    ++time_travel_checks;
+    for (const std::string& target : names) {
+      for (const std::string& source : names) {
+        for (std::size_t f = time_travel_checks % 3; f < names.size(); f += 3) {
+          const std::string& fixed = names[f];
+          if (!buffer.frameExists(target) || !buffer.frameExists(source) ||
+              !buffer.frameExists(fixed)) {
+            continue;
+          }
+          const std::optional<Answer> fixed_T_source = model.lookup(fixed, source);
+          const std::optional<Answer> target_T_fixed = model.lookup(target, fixed);
+          const std::string what = after + ": " + source + " in " + target + " through " + fixed +
+                                   ", in the tree" + model.describe();
+          if (!fixed_T_source || !target_T_fixed) {
+            EXPECT_THROW(buffer.lookupTransform(target, at(kNewer), source, at(kBetween), fixed),
+                         TransformException)
+                << what;
+            continue;
+          }
+          const TransformStamped travelled =
+              buffer.lookupTransform(target, at(kNewer), source, at(kBetween), fixed);
+          EXPECT_TRUE(
+              near(travelled.transform, target_T_fixed->value * fixed_T_source->value, kTolerance))
+              << what;
+          EXPECT_EQ(travelled.stamp, at(kNewer)) << what;
+        }
       }
     }
   }

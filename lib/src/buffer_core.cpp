@@ -381,6 +381,11 @@ TransformStamped BufferCore::lookupTransform(const std::string& target, TimePoin
   if (unresolved) impl_->raise(unresolved, timeTravelWhat(target, source, fixed));
   std::int64_t source_stamp = toUtime(source_time);
   std::int64_t target_stamp = toUtime(target_time);
+  Transform target_T_source;
+  if (impl_->quickTimeTravel(target_id, target_stamp, source_id, source_stamp, fixed_id,
+                             target_T_source)) {
+    return impl_->stamped(target_id, source_id, target_stamp, target_T_source);
+  }
   Transform fixed_T_source;
   Transform target_T_fixed;
   const LookupFailure source_failure =

@@ -83,6 +83,12 @@ class BufferCore::Impl {
   /// without a path, an edge whose history changes parent, or any failure; then the walk
   /// must, and `stamp` is left as it was.
   bool quickLookup(FrameId target, FrameId source, std::int64_t& stamp, Transform* value) const;
+  /// The time-travel lookup by the root paths: `source` at `source_stamp` into `fixed`, then
+  /// `fixed` at `target_stamp` into `target`, sampled and interpolated together. False, with
+  /// nothing written, when quickLookup() could not answer either half, or `fixed` is one of
+  /// the others.
+  bool quickTimeTravel(FrameId target, std::int64_t& target_stamp, FrameId source,
+                       std::int64_t& source_stamp, FrameId fixed, Transform& value) const;
   LookupFailure latestCommonTime(FrameId target, FrameId source, std::int64_t& stamp) const;
   /// The edges from each frame up to their common ancestor at `stamp` (0: the tree as of each
   /// edge's newest sample), one by one as tf walks them. Lookups the root paths cannot answer

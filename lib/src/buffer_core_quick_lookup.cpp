@@ -7,6 +7,7 @@
 
 #include "batch_interpolation.hpp"
 #include "buffer_core_impl.hpp"
+#include "compose.hpp"
 #include "path_product.hpp"
 
 namespace lcmtf {
@@ -91,69 +92,141 @@ bool takeSteps(const RootStep* steps, std::size_t count, bool last_anchored, std
   return true;
 }
 
-}  // namespace
+// A path as a quick lookup takes it: the steps up from the source, then those up from the
+// target, and the time to sample them at.
+struct QuickPath {
+  std::size_t source_count;
+  std::size_t target_count;
+  std::int64_t at;
+  QuickStep steps[kMostSteps];
+};
 
-bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t& stamp,
-                                   Transform* value) const {
+// Plans the lookup of `source` in `target` at `stamp` (0: the latest common time, which `at`
+// then gives), starting the loads of the samples when `prefetch`; false when the root paths
+// cannot answer.
+bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frames, FrameId target,
+              FrameId source, std::int64_t stamp, bool prefetch, QuickPath& path) {
   RootPaths::Path up_from_source;
   RootPaths::Path up_from_target;
-  if (!root_paths_.find(frames_, source, up_from_source) ||
-      !root_paths_.find(frames_, target, up_from_target) ||
+  if (!root_paths.find(frames, source, up_from_source) ||
+      !root_paths.find(frames, target, up_from_target) ||
       up_from_source.root != up_from_target.root) {
     return false;
   }
   const MeetingPoint meeting = meetingPoint(up_from_source, up_from_target, source, target);
   const std::size_t count = meeting.source_count + meeting.target_count;
   if (count > kMostSteps) return false;
-  QuickStep steps[kMostSteps];
-  const bool prefetch = value != nullptr && stamp != 0;
+  QuickStep* const steps = path.steps;
+  prefetch = prefetch && stamp != 0;
   if (!takeSteps(up_from_source.steps, meeting.source_count, meeting.source_anchored, stamp,
                  prefetch, steps) ||
       !takeSteps(up_from_target.steps, meeting.target_count, meeting.target_anchored, stamp,
                  prefetch, steps + meeting.source_count)) {
     return false;
   }
-  std::int64_t at = stamp;
-  if (at == 0) {
-    bool any_dynamic = false;
-    for (std::size_t i = 0; i < count; ++i) {
-      if (!steps[i].cache) continue;
-      const std::int64_t newest = steps[i].cache->newestStamp();
-      at = any_dynamic ? std::min(at, newest) : newest;
-      any_dynamic = true;
-    }
-    for (std::size_t i = 0; i < count; ++i) {
-      QuickStep& step = steps[i];
-      if (!step.cache) continue;
-      if (at < step.cache->oldestStamp()) return false;
-      step.hint = step.cache->hintNearNewest(at);
-    }
+  path.source_count = meeting.source_count;
+  path.target_count = meeting.target_count;
+  path.at = stamp;
+  if (stamp != 0) return true;
+  std::int64_t at = 0;
+  bool any_dynamic = false;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!steps[i].cache) continue;
+    const std::int64_t newest = steps[i].cache->newestStamp();
+    at = any_dynamic ? std::min(at, newest) : newest;
+    any_dynamic = true;
   }
-  if (value) {
-    const Transform* values[kMostSteps];
-    TransformRoom interpolated[kMostSteps];
-    detail::InterpolationTask tasks[kMostSteps];
-    std::size_t task_count = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    QuickStep& step = steps[i];
+    if (!step.cache) continue;
+    if (at < step.cache->oldestStamp()) return false;
+    step.hint = step.cache->hintNearNewest(at);
+  }
+  path.at = at;
+  return true;
+}
+
+// The values of the steps of one or more paths, with the interpolations they need run in one
+// batch.
+template <std::size_t Paths>
+class PathSampler {
+ public:
+  /// Points `values` at the value of each of `path`'s steps, valid once run() has returned.
+  void sample(const QuickPath& path, const Transform** values) {
+    const std::size_t count = path.source_count + path.target_count;
+    std::size_t task_count = count_;
     for (std::size_t i = 0; i < count; ++i) {
-      const QuickStep& step = steps[i];
+      const QuickStep& step = path.steps[i];
       if (!step.cache) {
         values[i] = step.fixed;
         continue;
       }
-      const detail::SampleSpan span = step.cache->spanWithin(at, step.hint, step.anchored);
+      const detail::SampleSpan span = step.cache->spanWithin(path.at, step.hint, step.anchored);
       if (!span.newer) {
         values[i] = span.older;
         continue;
       }
-      Transform* out = ::new (static_cast<void*>(interpolated[task_count].bytes)) Transform;
-      tasks[task_count++] = {span.older, span.newer, span.ratio, out, span.arc_squared};
+      Transform* out = ::new (static_cast<void*>(rooms_[task_count].bytes)) Transform;
+      tasks_[task_count++] = {span.older, span.newer, span.ratio, out, span.arc_squared};
       values[i] = out;
     }
-    detail::interpolateBatch(tasks, task_count);
-    detail::pathProduct(values, meeting.source_count, values + meeting.source_count,
-                        meeting.target_count, *value);
+    count_ = task_count;
   }
-  stamp = at;
+  void run() const { detail::interpolateBatch(tasks_, count_); }
+
+ private:
+  detail::InterpolationTask tasks_[Paths * kMostSteps];
+  TransformRoom rooms_[Paths * kMostSteps];
+  std::size_t count_ = 0;
+};
+
+}  // namespace
+
+bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t& stamp,
+                                   Transform* value) const {
+  QuickPath path;
+  if (!planPath(root_paths_, frames_, target, source, stamp, value != nullptr, path)) {
+    return false;
+  }
+  if (value) {
+    PathSampler<1> sampler;
+    const Transform* values[kMostSteps];
+    sampler.sample(path, values);
+    sampler.run();
+    detail::pathProduct(values, path.source_count, values + path.source_count, path.target_count,
+                        *value);
+  }
+  stamp = path.at;
+  return true;
+}
+
+bool BufferCore::Impl::quickTimeTravel(FrameId target, std::int64_t& target_stamp, FrameId source,
+                                       std::int64_t& source_stamp, FrameId fixed,
+                                       Transform& value) const {
+  if (source == fixed || target == fixed) return false;
+  QuickPath source_path;
+  QuickPath target_path;
+  if (!planPath(root_paths_, frames_, fixed, source, source_stamp, true, source_path) ||
+      !planPath(root_paths_, frames_, target, fixed, target_stamp, true, target_path)) {
+    return false;
+  }
+  PathSampler<2> sampler;
+  const Transform* source_values[kMostSteps];
+  const Transform* target_values[kMostSteps];
+  sampler.sample(source_path, source_values);
+  sampler.sample(target_path, target_values);
+  sampler.run();
+  Transform fixed_T_source;
+  Transform target_T_fixed;
+  detail::pathProduct(source_values, source_path.source_count,
+                      source_values + source_path.source_count, source_path.target_count,
+                      fixed_T_source);
+  detail::pathProduct(target_values, target_path.source_count,
+                      target_values + target_path.source_count, target_path.target_count,
+                      target_T_fixed);
+  value = detail::composed(target_T_fixed, fixed_T_source);
+  source_stamp = source_path.at;
+  target_stamp = target_path.at;
   return true;
 }
 

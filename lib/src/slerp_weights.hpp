@@ -49,11 +49,12 @@ constexpr double kInverseSinc[] = {1.0,
 constexpr double kShortSeriesLimit = 1e-3;
 constexpr double kLongSeriesLimit = 0.0612;
 
-template <std::size_t Terms, std::size_t N, std::size_t I = 0>
-inline double horner(const double (&coefficients)[N], double x) {
+// For a double, or for GCC vectors of doubles (several series evaluated at once).
+template <std::size_t Terms, std::size_t N, std::size_t I = 0, class Value>
+inline Value horner(const double (&coefficients)[N], Value x) {
   static_assert(Terms <= N);
   if constexpr (I + 1 == Terms) {
-    return coefficients[I];
+    return Value{} + coefficients[I];
   } else {
     return coefficients[I] + x * horner<Terms, N, I + 1>(coefficients, x);
   }
@@ -61,14 +62,18 @@ inline double horner(const double (&coefficients)[N], double x) {
 
 /// arc / sin(arc) from the squared arc, by the short series (arc_squared <= 4.01e-3, which
 /// y <= kShortSeriesLimit gives): the first omitted term is below 3e-17.
-inline double shortInverseSinc(double arc_squared) { return horner<5>(kInverseSinc, arc_squared); }
+template <class Value>
+inline Value shortInverseSinc(Value arc_squared) {
+  return horner<5>(kInverseSinc, arc_squared);
+}
 
 /// The squared arc, from y, by the short series (y <= kShortSeriesLimit).
 inline double shortArcSquared(double y) { return 4.0 * y * horner<5>(kAsinSquared, y); }
 
 /// One weight, w * sin(w * arc) / (w * arc), by the short series; `inverse_sinc` is
 /// arc / sin(arc).
-inline double shortSeriesWeight(double w, double arc_squared, double inverse_sinc) {
+template <class Value>
+inline Value shortSeriesWeight(Value w, Value arc_squared, Value inverse_sinc) {
   return w * (horner<5>(kSinc, w * w * arc_squared) * inverse_sinc);
 }
 
