@@ -318,10 +318,15 @@ TransformStamped BufferCore::lookupTransform(const std::string& target, const st
     const std::string name(stripLeadingSlash(target));
     return TransformStamped{fromUtime(stamp), name, name, Transform::identity()};
   }
-  FrameId target_id = kNoFrame;
-  FrameId source_id = kNoFrame;
+  FrameId target_id = impl_->idOf(stripLeadingSlash(target));
+  FrameId source_id = impl_->idOf(stripLeadingSlash(source));
   std::int64_t stamp = toUtime(time);
   Transform value;
+  // The usual case first, with no failure record to fill in.
+  if (target_id != kNoFrame && source_id != kNoFrame &&
+      impl_->quickLookup(target_id, source_id, stamp, &value)) {
+    return impl_->stamped(target_id, source_id, stamp, value);
+  }
   // Each failure in a variable of its own: see resolvePair().
   const LookupFailure unresolved = impl_->resolvePair(target, source, target_id, source_id);
   if (unresolved) impl_->raise(unresolved, lookupWhat(target, source));
@@ -344,6 +349,7 @@ void BufferCore::Impl::lookupHandles(FrameHandle target, FrameHandle source, std
     throw InvalidArgumentException(
         "lookupTransform: a frame handle is null or not from this buffer");
   }
+  if (target.id != source.id && quickLookup(target.id, source.id, stamp, &value)) return;
   const LookupFailure failure = lookup(target.id, source.id, stamp, &value);
   if (failure) {
     raise(failure, lookupWhat(std::string(nameOf(target.id)), std::string(nameOf(source.id))));
@@ -373,19 +379,21 @@ TransformStamped BufferCore::lookupTransform(const std::string& target, TimePoin
                                              const std::string& source, TimePoint source_time,
                                              const std::string& fixed) const {
   SharedLock lock(impl_->lock_);
-  FrameId target_id = kNoFrame;
-  FrameId source_id = kNoFrame;
-  FrameId fixed_id = kNoFrame;
-  const LookupFailure unresolved =
-      impl_->resolveAll(target, source, fixed, target_id, source_id, fixed_id);
-  if (unresolved) impl_->raise(unresolved, timeTravelWhat(target, source, fixed));
+  FrameId target_id = impl_->idOf(stripLeadingSlash(target));
+  FrameId source_id = impl_->idOf(stripLeadingSlash(source));
+  FrameId fixed_id = impl_->idOf(stripLeadingSlash(fixed));
   std::int64_t source_stamp = toUtime(source_time);
   std::int64_t target_stamp = toUtime(target_time);
   Transform target_T_source;
-  if (impl_->quickTimeTravel(target_id, target_stamp, source_id, source_stamp, fixed_id,
+  // The usual case first, with no failure record to fill in.
+  if (target_id != kNoFrame && source_id != kNoFrame && fixed_id != kNoFrame &&
+      impl_->quickTimeTravel(target_id, target_stamp, source_id, source_stamp, fixed_id,
                              target_T_source)) {
     return impl_->stamped(target_id, source_id, target_stamp, target_T_source);
   }
+  const LookupFailure unresolved =
+      impl_->resolveAll(target, source, fixed, target_id, source_id, fixed_id);
+  if (unresolved) impl_->raise(unresolved, timeTravelWhat(target, source, fixed));
   Transform fixed_T_source;
   Transform target_T_fixed;
   const LookupFailure source_failure =
