@@ -64,6 +64,13 @@ TEST(InterpolateBatch, BatchesLargerThanOneRoundOfLanesMatchToo) {
   expectBatchMatchesOneByOne(101);
 }
 
+TEST(InterpolateBatch, EveryBatchSizeUpToTwoRoundsOfLanesMatches) {
+  for (std::size_t count = 1; count <= 9; ++count) {
+    expectBatchMatchesOneByOne(count);
+    expectBatchMatchesOneByOne(count, true);
+  }
+}
+
 TEST(InterpolateBatch, ArcsWorkedOutBeforehandGiveTheSameResults) {
   expectBatchMatchesOneByOne(101, true);
 }

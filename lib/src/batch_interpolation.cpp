@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <new>
 
 #include "slerp_weights.hpp"
 #include "wide_vectors.hpp"
@@ -63,20 +62,27 @@ void weightsOfAnyArc(const InterpolationTask& task, double& weight_a, double& we
                                               weight_b * loadFour(newer.rotation.coeffs().data()));
 }
 
-// Four tasks at once: the weights of all four from the short series side by side, a negative
-// weight for each newer rotation on the far side of the sphere from its older one.
-[[gnu::always_inline]] inline void interpolateFour(const InterpolationTask* const* lanes) {
-  const Four ratio = {lanes[0]->ratio, lanes[1]->ratio, lanes[2]->ratio, lanes[3]->ratio};
-  const Four known = {lanes[0]->arc_squared, lanes[1]->arc_squared, lanes[2]->arc_squared,
-                      lanes[3]->arc_squared};
+// Up to four tasks at once (`live` of them, the lanes after them idle): the weights of all four
+// from the short series side by side, a negative weight for each newer rotation on the far
+// side of the sphere from its older one.
+[[gnu::always_inline]] inline void interpolateFour(const InterpolationTask* tasks,
+                                                   std::size_t live) {
+  Four ratio = {0.5, 0.5, 0.5, 0.5};
+  Four known = {0.0, 0.0, 0.0, 0.0};
+  for (std::size_t lane = 0; lane < kLanes; ++lane) {
+    if (lane < live) {
+      ratio[lane] = tasks[lane].ratio;
+      known[lane] = tasks[lane].arc_squared;
+    }
+  }
   const FourBits far_side = reinterpret_cast<FourBits>(known) < 0;
   const Four arc_squared = far_side ? -known : known;
   const Four inverse_sinc = shortInverseSinc(arc_squared);
   const Four weight_a = shortSeriesWeight(1.0 - ratio, arc_squared, inverse_sinc);
   const Four near_weight_b = shortSeriesWeight(ratio, arc_squared, inverse_sinc);
   const Four weight_b = far_side ? -near_weight_b : near_weight_b;
-  for (std::size_t lane = 0; lane < kLanes; ++lane) {
-    const InterpolationTask& task = *lanes[lane];
+  for (std::size_t lane = 0; lane < live; ++lane) {
+    const InterpolationTask& task = tasks[lane];
     if (std::isnan(task.arc_squared)) {
       double any_a;
       double any_b;
@@ -88,31 +94,12 @@ void weightsOfAnyArc(const InterpolationTask& task, double& weight_a, double& we
   }
 }
 
-// Room for a transform nobody reads.
-struct Scratch {
-  alignas(Transform) unsigned char bytes[sizeof(Transform)];
-};
-
 }  // namespace
 
 LCMTF_WIDE_VECTORS void interpolateBatch(const InterpolationTask* tasks, std::size_t count) {
   std::size_t first = 0;
-  for (; first + kLanes <= count; first += kLanes) {
-    const InterpolationTask* const lanes[kLanes] = {tasks + first, tasks + first + 1,
-                                                    tasks + first + 2, tasks + first + 3};
-    interpolateFour(lanes);
-  }
-  if (first == count) return;
-  // Lanes to spare interpolate the last task's older value with itself, into scratch.
-  Scratch scratch;
-  const InterpolationTask& last = tasks[count - 1];
-  const InterpolationTask spare{last.older, last.older, 0.5,
-                                ::new (static_cast<void*>(scratch.bytes)) Transform, 0.0};
-  const InterpolationTask* lanes[kLanes];
-  for (std::size_t lane = 0; lane < kLanes; ++lane) {
-    lanes[lane] = first + lane < count ? tasks + first + lane : &spare;
-  }
-  interpolateFour(lanes);
+  for (; first + kLanes <= count; first += kLanes) interpolateFour(tasks + first, kLanes);
+  if (first < count) interpolateFour(tasks + first, count - first);
 }
 
 }  // namespace lcmtf::detail

@@ -51,7 +51,7 @@ constexpr double kLongSeriesLimit = 0.0612;
 
 // For a double, or for GCC vectors of doubles (several series evaluated at once).
 template <std::size_t Terms, std::size_t N, std::size_t I = 0, class Value>
-inline Value horner(const double (&coefficients)[N], Value x) {
+[[gnu::always_inline]] inline Value horner(const double (&coefficients)[N], Value x) {
   static_assert(Terms <= N);
   if constexpr (I + 1 == Terms) {
     return Value{} + coefficients[I];
@@ -63,7 +63,7 @@ inline Value horner(const double (&coefficients)[N], Value x) {
 /// arc / sin(arc) from the squared arc, by the short series (arc_squared <= 4.01e-3, which
 /// y <= kShortSeriesLimit gives): the first omitted term is below 3e-17.
 template <class Value>
-inline Value shortInverseSinc(Value arc_squared) {
+[[gnu::always_inline]] inline Value shortInverseSinc(Value arc_squared) {
   return horner<5>(kInverseSinc, arc_squared);
 }
 
@@ -73,7 +73,8 @@ inline double shortArcSquared(double y) { return 4.0 * y * horner<5>(kAsinSquare
 /// One weight, w * sin(w * arc) / (w * arc), by the short series; `inverse_sinc` is
 /// arc / sin(arc).
 template <class Value>
-inline Value shortSeriesWeight(Value w, Value arc_squared, Value inverse_sinc) {
+[[gnu::always_inline]] inline Value shortSeriesWeight(Value w, Value arc_squared,
+                                                      Value inverse_sinc) {
   return w * (horner<5>(kSinc, w * w * arc_squared) * inverse_sinc);
 }
 
