@@ -74,7 +74,7 @@ MeetingPoint meetingPoint(const RootPaths::Path& up_from_source,
 
 // Fills `out` with the steps of one side; false when a dynamic edge among them has changed
 // parent within its history (the tree at `stamp` may not be the paths'), or has no data at
-// `stamp` (0: checked later).
+// `stamp` (0: both checked later). The paths were built with each edge's newest parent.
 bool takeSteps(const RootStep* steps, std::size_t count, bool last_anchored, std::int64_t stamp,
                bool prefetch, QuickStep* out) {
   for (std::size_t i = 0; i < count; ++i) {
@@ -83,10 +83,9 @@ bool takeSteps(const RootStep* steps, std::size_t count, bool last_anchored, std
     quick = QuickStep{step.cache, step.fixed, false, detail::TimeCache::kNoHint};
     if (!step.cache) continue;
     const detail::TimeCache& cache = *step.cache;
-    if (!cache.hasSingleParent() || cache.newestParent() != step.parent) return false;
     quick.anchored = i + 1 == count ? last_anchored : step.anchored;
     if (stamp == 0) continue;
-    if (stamp < cache.oldestStamp() || stamp > cache.newestStamp()) return false;
+    if (stamp < cache.singleParentFrom() || stamp > cache.newestStamp()) return false;
     if (prefetch) quick.hint = cache.prefetch(stamp, quick.anchored);
   }
   return true;
@@ -139,7 +138,7 @@ bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frame
   for (std::size_t i = 0; i < count; ++i) {
     QuickStep& step = steps[i];
     if (!step.cache) continue;
-    if (at < step.cache->oldestStamp()) return false;
+    if (at < step.cache->singleParentFrom()) return false;
     step.hint = step.cache->hintNearNewest(at);
   }
   path.at = at;

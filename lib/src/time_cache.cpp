@@ -28,6 +28,7 @@ void TimeCache::clearHistory() {
 }
 
 void TimeCache::refreshEnds() {
+  single_parent_from_ = std::numeric_limits<std::int64_t>::max();
   if (count_ == 0) {
     oldest_stamp_ = newest_stamp_ = 0;
     oldest_parent_ = newest_parent_ = kNoFrame;
@@ -48,6 +49,7 @@ void TimeCache::refreshEnds() {
       newest_stamp_ > oldest_stamp_
           ? static_cast<double>(count_ - 1) / static_cast<double>(newest_stamp_ - oldest_stamp_)
           : 0.0;
+  if (hasSingleParent()) single_parent_from_ = oldest_stamp_;
 }
 
 void TimeCache::put(std::size_t index, std::int64_t stamp, FrameId parent,

@@ -84,6 +84,9 @@ class TimeCache {
   /// The value of a static edge.
   const EdgeValue& staticValue() const { return static_value_; }
   std::int64_t oldestStamp() const { return oldest_stamp_; }
+  /// The oldest stamp from which spanWithin() may be asked for this edge's samples: the oldest
+  /// sample's when all the samples have one parent, else none (the int64 maximum).
+  std::int64_t singleParentFrom() const { return single_parent_from_; }
   std::int64_t newestStamp() const { return newest_stamp_; }
   FrameId newestParent() const { return newest_parent_; }
 
@@ -97,7 +100,8 @@ class TimeCache {
   /// parent), with the status find() would give; kNoFrame when the edge is empty.
   FrameId parentAt(std::int64_t stamp, SampleStatus& status) const;
   /// Starts loading the samples spanWithin(stamp) will read, so several edges load at once;
-  /// returns where it guessed they are, as a hint for spanWithin().
+  /// returns where it guessed they are, as a hint for spanWithin(). For a dynamic edge with
+  /// data at `stamp`.
   std::size_t prefetch(std::int64_t stamp, bool anchored) const;
   /// A hint for spanWithin() at a time near the newest sample (as latest-common-time lookups ask):
   /// the sample before the newest when `stamp` falls after it, else none.
@@ -178,6 +182,7 @@ class TimeCache {
   FrameId newest_parent_ = kNoFrame;
   Eigen::Quaterniond newest_rotation_ = Eigen::Quaterniond::Identity();
   double samples_per_utime_ = 0.0;  // (count - 1) / (newest - oldest), for guessIndex()
+  std::int64_t single_parent_from_ = std::numeric_limits<std::int64_t>::max();
 };
 
 template <class AnchorOf>
@@ -200,15 +205,13 @@ void TimeCache::reanchor(AnchorOf anchorOf) {
 // for oldest <= stamp < newest.
 inline std::size_t TimeCache::guessIndex(std::int64_t stamp) const {
   const std::size_t last = count_ - 1;
-  const auto guess =
-      static_cast<std::size_t>(static_cast<double>(stamp - oldest_stamp_) * samples_per_utime_);
+  const auto guess = static_cast<std::size_t>(
+      static_cast<std::int64_t>(static_cast<double>(stamp - oldest_stamp_) * samples_per_utime_));
   return std::min(guess, last - 1);
 }
 
 inline std::size_t TimeCache::prefetch(std::int64_t stamp, bool anchored) const {
-  if (is_static_ || count_ < 2 || stamp <= oldest_stamp_ || stamp >= newest_stamp_) {
-    return kNoHint;
-  }
+  if (count_ < 2) return kNoHint;
   const std::size_t guess = guessIndex(stamp);
   __builtin_prefetch(&stamps_[slot(guess)]);
   const TransformRing& transforms = ring(anchored);
