@@ -72,11 +72,23 @@ MeetingPoint meetingPoint(const RootPaths::Path& up_from_source,
   return meeting;
 }
 
+// The newest stamp at which every dynamic edge seen so far has data, if there has been one.
+struct CommonNewest {
+  std::int64_t stamp = 0;
+  bool any_dynamic = false;
+
+  void add(std::int64_t newest) {
+    stamp = any_dynamic ? std::min(stamp, newest) : newest;
+    any_dynamic = true;
+  }
+};
+
 // Fills `out` with the steps of one side; false when a dynamic edge among them has changed
 // parent within its history (the tree at `stamp` may not be the paths'), or has no data at
-// `stamp` (0: both checked later). The paths were built with each edge's newest parent.
+// `stamp` (0: both checked later, and each edge's newest stamp added to `common_newest`).
+// The paths were built with each edge's newest parent.
 bool takeSteps(const RootStep* steps, std::size_t count, bool last_anchored, std::int64_t stamp,
-               bool prefetch, QuickStep* out) {
+               bool prefetch, QuickStep* out, CommonNewest& common_newest) {
   for (std::size_t i = 0; i < count; ++i) {
     const RootStep& step = steps[i];
     QuickStep& quick = out[i];
@@ -84,7 +96,10 @@ bool takeSteps(const RootStep* steps, std::size_t count, bool last_anchored, std
     if (!step.cache) continue;
     const detail::TimeCache& cache = *step.cache;
     quick.anchored = i + 1 == count ? last_anchored : step.anchored;
-    if (stamp == 0) continue;
+    if (stamp == 0) {
+      common_newest.add(cache.newestStamp());
+      continue;
+    }
     if (stamp < cache.singleParentFrom() || stamp > cache.newestStamp()) return false;
     if (prefetch) quick.hint = cache.prefetch(stamp, quick.anchored);
   }
@@ -117,24 +132,18 @@ bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frame
   if (count > kMostSteps) return false;
   QuickStep* const steps = path.steps;
   prefetch = prefetch && stamp != 0;
+  CommonNewest common_newest;
   if (!takeSteps(up_from_source.steps, meeting.source_count, meeting.source_anchored, stamp,
-                 prefetch, steps) ||
+                 prefetch, steps, common_newest) ||
       !takeSteps(up_from_target.steps, meeting.target_count, meeting.target_anchored, stamp,
-                 prefetch, steps + meeting.source_count)) {
+                 prefetch, steps + meeting.source_count, common_newest)) {
     return false;
   }
   path.source_count = meeting.source_count;
   path.target_count = meeting.target_count;
   path.at = stamp;
-  if (stamp != 0) return true;
-  std::int64_t at = 0;
-  bool any_dynamic = false;
-  for (std::size_t i = 0; i < count; ++i) {
-    if (!steps[i].cache) continue;
-    const std::int64_t newest = steps[i].cache->newestStamp();
-    at = any_dynamic ? std::min(at, newest) : newest;
-    any_dynamic = true;
-  }
+  if (stamp != 0 || !common_newest.any_dynamic) return true;
+  const std::int64_t at = common_newest.stamp;
   for (std::size_t i = 0; i < count; ++i) {
     QuickStep& step = steps[i];
     if (!step.cache) continue;
