@@ -16,8 +16,8 @@ struct InterpolationTask {
   double arc_squared;
 };
 
-/// Runs every task, with interpolate()'s result for each (for unit rotations), but stage by
-/// stage across the batch so that the long chains of dependent arithmetic in each slerp overlap.
+/// Runs every task, with interpolate()'s result for each (for unit rotations), but four at a
+/// time, the slerp weights of the four worked out side by side in vector registers.
 void interpolateBatch(const InterpolationTask* tasks, std::size_t count);
 
 }  // namespace lcmtf::detail
