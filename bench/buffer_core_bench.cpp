@@ -26,7 +26,7 @@ namespace {
 constexpr std::size_t kWriterFrames = 60;
 constexpr auto kWriterPeriod = std::chrono::milliseconds(1);
 constexpr auto kConcurrentWindow = std::chrono::milliseconds(400);
-constexpr int kConcurrentRepetitions = 5;
+constexpr int kConcurrentRounds = 5;
 constexpr int kRounds = 3;
 
 const Workload& workload() {
@@ -226,18 +226,22 @@ void registerHandleLookups() {
 }
 
 template <class Subject>
-void registerMemoryAndThreads() {
-  const std::string prefix = std::string(Subject::kName) + "/";
-  benchmark::RegisterBenchmark((prefix + "memory").c_str(), memoryBench<Subject>)
+void registerMemory() {
+  benchmark::RegisterBenchmark((std::string(Subject::kName) + "/memory").c_str(),
+                               memoryBench<Subject>)
       ->Iterations(1)
       ->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark((prefix + "lookups_with_writer").c_str(), concurrentBench<Subject>)
+}
+
+// One window with one reader, then one with two.
+template <class Subject>
+void registerThreads() {
+  benchmark::RegisterBenchmark((std::string(Subject::kName) + "/lookups_with_writer").c_str(),
+                               concurrentBench<Subject>)
       ->ArgName("readers")
       ->Arg(1)
       ->Arg(2)
       ->Iterations(1)
-      ->Repetitions(kConcurrentRepetitions)
-      ->ReportAggregatesOnly(true)
       ->UseManualTime()
       ->Unit(benchmark::kMillisecond);
 }
@@ -315,10 +319,18 @@ int main(int argc, char** argv) {
     }
     registerHandleLookups();
   }
-  registerMemoryAndThreads<LcmtfSubject>();
+  registerMemory<LcmtfSubject>();
 #ifdef LCMTF_BENCH_WITH_TF2
-  registerMemoryAndThreads<Tf2Subject>();
+  registerMemory<Tf2Subject>();
 #endif
+  // Likewise the windows with readers and a writer: one reader and two take turns, and the
+  // summary takes each one's best window.
+  for (int round = 0; round < kConcurrentRounds; ++round) {
+    registerThreads<LcmtfSubject>();
+#ifdef LCMTF_BENCH_WITH_TF2
+    registerThreads<Tf2Subject>();
+#endif
+  }
   RecordingReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   printSummary(reporter);
