@@ -327,10 +327,12 @@ TransformStamped BufferCore::lookupTransform(const std::string& target, const st
       impl_->quickLookup(target_id, source_id, stamp, &value)) {
     return impl_->stamped(target_id, source_id, stamp, value);
   }
-  // Each failure in a variable of its own: see resolvePair().
-  const LookupFailure unresolved = impl_->resolvePair(target, source, target_id, source_id);
-  if (unresolved) impl_->raise(unresolved, lookupWhat(target, source));
-  const LookupFailure failure = impl_->lookup(target_id, source_id, stamp, &value);
+  if (target_id == kNoFrame || source_id == kNoFrame) {
+    // Each failure in a variable of its own: see resolvePair().
+    const LookupFailure unresolved = impl_->resolvePair(target, source, target_id, source_id);
+    impl_->raise(unresolved, lookupWhat(target, source));
+  }
+  const LookupFailure failure = impl_->lookupByWalk(target_id, source_id, stamp, &value);
   if (failure) impl_->raise(failure, lookupWhat(target, source));
   return impl_->stamped(target_id, source_id, stamp, value);
 }
@@ -349,8 +351,9 @@ void BufferCore::Impl::lookupHandles(FrameHandle target, FrameHandle source, std
     throw InvalidArgumentException(
         "lookupTransform: a frame handle is null or not from this buffer");
   }
+  // The usual case first, with no failure record to fill in.
   if (target.id != source.id && quickLookup(target.id, source.id, stamp, &value)) return;
-  const LookupFailure failure = lookup(target.id, source.id, stamp, &value);
+  const LookupFailure failure = lookupByWalk(target.id, source.id, stamp, &value);
   if (failure) {
     raise(failure, lookupWhat(std::string(nameOf(target.id)), std::string(nameOf(source.id))));
   }
@@ -391,9 +394,11 @@ TransformStamped BufferCore::lookupTransform(const std::string& target, TimePoin
                              target_T_source)) {
     return impl_->stamped(target_id, source_id, target_stamp, target_T_source);
   }
-  const LookupFailure unresolved =
-      impl_->resolveAll(target, source, fixed, target_id, source_id, fixed_id);
-  if (unresolved) impl_->raise(unresolved, timeTravelWhat(target, source, fixed));
+  if (target_id == kNoFrame || source_id == kNoFrame || fixed_id == kNoFrame) {
+    const LookupFailure unresolved =
+        impl_->resolveAll(target, source, fixed, target_id, source_id, fixed_id);
+    impl_->raise(unresolved, timeTravelWhat(target, source, fixed));
+  }
   Transform fixed_T_source;
   Transform target_T_fixed;
   const LookupFailure source_failure =

@@ -70,6 +70,9 @@ class BufferCore::Impl {
   /// target_T_source at `stamp` (0: the latest common time, written back) into `value` when
   /// given, or why not.
   LookupFailure lookup(FrameId target, FrameId source, std::int64_t& stamp, Transform* value) const;
+  /// lookup() without trying quickLookup() first, for callers that have tried it.
+  LookupFailure lookupByWalk(FrameId target, FrameId source, std::int64_t& stamp,
+                             Transform* value) const;
   /// lookup() between two handles; throws when either is foreign or the lookup fails.
   void lookupHandles(FrameHandle target, FrameHandle source, std::int64_t& stamp,
                      Transform& value) const;

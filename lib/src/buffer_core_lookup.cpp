@@ -229,8 +229,13 @@ LookupFailure BufferCore::Impl::latestCommonTime(FrameId target, FrameId source,
 
 LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int64_t& stamp,
                                        Transform* value) const {
-  WalkScratch& s = scratch;
   if (target != source && quickLookup(target, source, stamp, value)) return {};
+  return lookupByWalk(target, source, stamp, value);
+}
+
+LookupFailure BufferCore::Impl::lookupByWalk(FrameId target, FrameId source, std::int64_t& stamp,
+                                             Transform* value) const {
+  WalkScratch& s = scratch;
   LookupFailure failure;
   if (target == source) {
     if (stamp == 0) failure = latestCommonTime(target, source, stamp);

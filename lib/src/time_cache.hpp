@@ -201,8 +201,8 @@ void TimeCache::reanchor(AnchorOf anchorOf) {
   }
 }
 
-// Where `stamp` would be if the samples were evenly spaced, as most publishers space them;
-// for oldest <= stamp < newest.
+// Where `stamp` would be if the samples were evenly spaced, as most publishers space them
+// (never the newest sample, so that the next one exists); for oldest <= stamp <= newest.
 inline std::size_t TimeCache::guessIndex(std::int64_t stamp) const {
   const std::size_t last = count_ - 1;
   const auto guess = static_cast<std::size_t>(
