@@ -209,6 +209,58 @@ TEST_F(TreeWithALoop, BeforeTheParentChangeTheChainStillWorks) {
             1e-12);
 }
 
+TEST_F(BufferCoreErrors, DisconnectedTreesStayNotConnectedWhereAnEdgeAlsoLacksData) {
+  // arm has data from 1 s to 3 s only; it is in world's tree all the same.
+  EXPECT_THAT(
+      messageOf<ConnectivityException>([&] { buffer_.lookupTransform("dock", "hand", at(5)); }),
+      HasSubstr("'hand' is in the tree of 'world', 'dock' in the tree of 'map'"));
+  EXPECT_THROW(buffer_.lookupTransform("hand", "dock", at(5)), ConnectivityException);
+}
+
+// A loop that only an edge without data closes: c's parent is b, b's is a, and a's parent is
+// c, but only from t = 4 on; d hangs off a. b and c have data from 1 s to 5 s.
+class LoopClosedLater : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    for (const double t : {1.0, 5.0}) {
+      put(buffer_, "a", "b", at(t), pose({1, 0, 0}, 0, kZ));
+      put(buffer_, "b", "c", at(t), pose({0, 1, 0}, 0, kZ));
+    }
+    putStatic(buffer_, "a", "d", pose({0, 0, 1}, 0, kZ));
+    for (const double t : {4.0, 5.0}) put(buffer_, "c", "a", at(t), pose({0, 0, 2}, 0, kZ));
+  }
+  BufferCore buffer_;
+};
+
+TEST_F(LoopClosedLater, BeforeTheLoopClosesFramesBelowItsOpenEdgeConnect) {
+  // c climbs to a, whose edge has no data at 2 s; d meets it there.
+  EXPECT_LE(
+      (buffer_.lookupTransform("d", "c", at(2)).transform.translation - Eigen::Vector3d(1, 1, -1))
+          .norm(),
+      1e-12);
+  EXPECT_LE(
+      (buffer_.lookupTransform("c", "d", at(2)).transform.translation - Eigen::Vector3d(-1, -1, 1))
+          .norm(),
+      1e-12);
+  EXPECT_TRUE(buffer_.canTransform("d", "c", at(2)));
+}
+
+TEST_F(LoopClosedLater, OnceTheLoopIsClosedLookupsThroughItRaiseLookupException) {
+  EXPECT_THAT(messageOf<LookupException>([&] { buffer_.lookupTransform("d", "c", at(4.5)); }),
+              HasSubstr("'c' -> 'b' -> 'a' -> 'c'"));
+}
+
+TEST_F(LoopClosedLater, BeyondTheOpenEdgeTheMissingDataIsTheError) {
+  // Climbing on from a would only go round the loop that a's nearest sample closes.
+  buffer_.resolveFrame("elsewhere");
+  EXPECT_THAT(messageOf<PastExtrapolationException>(
+                  [&] { buffer_.lookupTransform("d", "elsewhere", at(2)); }),
+              HasSubstr("edge 'c' -> 'a'"));
+  EXPECT_THAT(messageOf<PastExtrapolationException>(
+                  [&] { buffer_.lookupTransform("elsewhere", "d", at(2)); }),
+              HasSubstr("edge 'c' -> 'a'"));
+}
+
 TEST_F(BufferCoreErrors, EmptyFrameNamesRaiseInvalidArgumentException) {
   const auto invalid = [](const std::function<void()>& call) {
     return messageOf<InvalidArgumentException>(call);

@@ -94,11 +94,18 @@ class BufferCore::Impl {
                        std::int64_t& source_stamp, FrameId fixed, Transform& value) const;
   LookupFailure latestCommonTime(FrameId target, FrameId source, std::int64_t& stamp) const;
   /// The edges from each frame up to their common ancestor at `stamp` (0: the tree as of each
-  /// edge's newest sample), one by one as tf walks them. Lookups the root paths cannot answer
-  /// take this way, which holds in any tree, loops and changing parents included.
+  /// edge's newest sample), one by one as tf walks them, each with data at `stamp`. Lookups
+  /// the root paths cannot answer take this way, which holds in any tree, loops and changing
+  /// parents included. Frames whose trees do not meet are not connected, even where an edge
+  /// on the way lacks data too (its parent then taken from its nearest sample).
   LookupFailure walk(FrameId target, FrameId source, std::int64_t stamp,
                      std::vector<PathEdge>& source_edges, std::vector<PathEdge>& target_edges,
                      FrameId* ancestor) const;
+  /// walk() once: through the edges without data at `stamp`, or, as tf does, with the
+  /// source's climb ending below the first one and the target's failing on it.
+  LookupFailure climb(FrameId target, FrameId source, std::int64_t stamp, bool through_missing_data,
+                      std::vector<PathEdge>& source_edges, std::vector<PathEdge>& target_edges,
+                      FrameId* ancestor) const;
   /// Recomputes every frame's static_top after a static edge changed, and the anchored samples
   /// of the edges into frames whose chain changed (exclusive lock).
   void updateStaticChains();

@@ -92,6 +92,21 @@ Transform pathValue(WalkScratch& s) {
   return target_T_source;
 }
 
+// A dynamic edge without data at `stamp`, as a failure.
+LookupFailure missingData(const std::vector<FrameRecord>& frames, const PathEdge& edge,
+                          std::int64_t stamp) {
+  const detail::TimeCache& cache = frames[edge.child].cache;
+  LookupFailure failure;
+  failure.kind = edge.status == SampleStatus::kPast ? LookupFailure::Kind::kPast
+                                                    : LookupFailure::Kind::kFuture;
+  failure.edge_child = edge.child;
+  failure.edge_parent = edge.parent;
+  failure.requested = stamp;
+  failure.oldest = cache.oldestStamp();
+  failure.newest = cache.newestStamp();
+  return failure;
+}
+
 // The first dynamic edge without data at `stamp` as a failure; fills the spans otherwise,
 // unless `check_only` (the walk at `stamp` has found whether each edge has data there).
 // A span whose parent is not the one the walk used means the tree was different at `stamp`.
@@ -108,15 +123,7 @@ LookupFailure sampleEdges(const std::vector<FrameRecord>& frames, std::vector<Pa
       if (parent_changed && edge.span.parent != edge.parent) *parent_changed = true;
       continue;
     }
-    LookupFailure failure;
-    failure.kind = edge.status == SampleStatus::kPast ? LookupFailure::Kind::kPast
-                                                      : LookupFailure::Kind::kFuture;
-    failure.edge_child = edge.child;
-    failure.edge_parent = edge.parent;
-    failure.requested = stamp;
-    failure.oldest = cache.oldestStamp();
-    failure.newest = cache.newestStamp();
-    return failure;
+    return missingData(frames, edge, stamp);
   }
   return {};
 }
@@ -143,6 +150,23 @@ std::int64_t commonNewest(const std::vector<FrameRecord>& frames,
 LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_t stamp,
                                      std::vector<PathEdge>& source_edges,
                                      std::vector<PathEdge>& target_edges, FrameId* ancestor) const {
+  const LookupFailure failure =
+      climb(target, source, stamp, false, source_edges, target_edges, ancestor);
+  if (failure.kind != LookupFailure::Kind::kPast && failure.kind != LookupFailure::Kind::kFuture) {
+    return failure;
+  }
+  // Frames whose trees do not meet even through the edges without data are not connected,
+  // which says more than the missing data does.
+  const LookupFailure through =
+      climb(target, source, stamp, true, source_edges, target_edges, ancestor);
+  return through.kind == LookupFailure::Kind::kNotConnected ? through : failure;
+}
+
+LookupFailure BufferCore::Impl::climb(FrameId target, FrameId source, std::int64_t stamp,
+                                      bool through_missing_data,
+                                      std::vector<PathEdge>& source_edges,
+                                      std::vector<PathEdge>& target_edges,
+                                      FrameId* ancestor) const {
   WalkScratch& s = scratch;
   if (s.visit_epoch.size() < frames_.size()) {
     s.visit_epoch.resize(frames_.size(), 0);
@@ -163,9 +187,12 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
   };
 
   // Every frame the source's walk reaches is marked with its place in the walk; the target's
-  // walk stops at the first marked frame, their common ancestor.
+  // walk stops at the first marked frame, their common ancestor. Unless told to go through,
+  // the source's walk ends below an edge without data at `stamp` (the target's walk may still
+  // meet it there), and the target's fails on one.
   FrameId frame = source;
   FrameId source_root = source;
+  LookupFailure source_stopped;
   for (std::size_t depth = 0;; ++depth) {
     if (depth > max_depth) return loopFailure(source);
     s.visit_epoch[frame] = epoch;
@@ -177,7 +204,9 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
     // Filled in place: a copy of a freshly written edge would stall on store forwarding.
     PathEdge& edge = source_edges.emplace_back();
     stepUp(frames_, frame, stamp, edge);
-    if (edge.parent == kNoFrame) {
+    const bool missing_data = edge.status != SampleStatus::kOk && !through_missing_data;
+    if (edge.parent == kNoFrame || missing_data) {
+      if (missing_data) source_stopped = missingData(frames_, edge, stamp);
       source_edges.pop_back();
       source_root = frame;
       break;
@@ -195,8 +224,12 @@ LookupFailure BufferCore::Impl::walk(FrameId target, FrameId source, std::int64_
     }
     PathEdge& edge = target_edges.emplace_back();
     stepUp(frames_, frame, stamp, edge);
+    if (edge.parent != kNoFrame && edge.status != SampleStatus::kOk && !through_missing_data) {
+      return missingData(frames_, edge, stamp);
+    }
     if (edge.parent == kNoFrame) {
       target_edges.pop_back();
+      if (source_stopped) return source_stopped;
       LookupFailure failure;
       failure.kind = LookupFailure::Kind::kNotConnected;
       failure.target = target;

@@ -1,0 +1,346 @@
+// lcmtf's BufferCore gives ROS tf2's answers. Random forests of frames (static and dynamic
+// edges, edges that change parent, samples inserted out of order, histories long enough to be
+// pruned) are given to both libraries alike; then the same lookups, latest-time lookups,
+// time-travel lookups and canTransform questions go to both, and every answer must agree: the
+// same value and stamp, or the same kind of error. Built only where ROS tf2 is installed.
+//
+// Left out on purpose, where lcmtf is specified to differ: a repeated stamp (tf2 keeps the
+// first sample, lcmtf the newer one), names with a leading '/' (tf2 refuses them, lcmtf strips
+// the slash) and error messages. One difference is allowed in the answers: where the frames'
+// trees do not meet, lcmtf reports them not connected even when an edge on the way also lacks
+// data at the time asked, as it knows that edge's parent from its nearest sample; tf2 stops at
+// such an edge and reports the missing data.
+#include <console_bridge/console.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <gtest/gtest.h>
+#include <tf2/buffer_core.h>
+#include <tf2/exceptions.h>
+
+#include <algorithm>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "lcmtf/buffer_core.hpp"
+#include "lcmtf/exceptions.hpp"
+
+namespace lcmtf {
+namespace {
+
+constexpr std::int64_t kSecond = 1'000'000;
+constexpr std::int64_t kStart = 1'000 * kSecond;
+
+ros::Time rosTime(std::int64_t utime) {
+  return ros::Time(static_cast<std::uint32_t>(utime / kSecond),
+                   static_cast<std::uint32_t>(utime % kSecond * 1000));
+}
+
+std::int64_t utimeOf(const ros::Time& time) {
+  return static_cast<std::int64_t>(time.sec) * kSecond + time.nsec / 1000;
+}
+
+// What a lookup gave: a value and its stamp, or the kind of error.
+struct Outcome {
+  enum Kind { kValue, kLookup, kConnectivity, kExtrapolation, kInvalidArgument, kOther };
+  Kind kind = kOther;
+  std::int64_t stamp = 0;
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+  std::string message;
+
+  std::string describe() const {
+    static const char* const kNames[] = {"value",         "LookupException", "Connectivity",
+                                         "Extrapolation", "InvalidArgument", "other error"};
+    std::ostringstream text;
+    text << kNames[kind];
+    if (kind == kValue) {
+      text << " at " << stamp << ": t [" << translation.transpose() << "] q ["
+           << rotation.coeffs().transpose() << "]";
+    } else {
+      text << ": " << message;
+    }
+    return text.str();
+  }
+};
+
+bool agree(const Outcome& ours, const Outcome& theirs) {
+  const Outcome& a = ours;
+  const Outcome& b = theirs;
+  if (a.kind == Outcome::kConnectivity && b.kind == Outcome::kExtrapolation) return true;
+  if (a.kind != b.kind) return false;
+  if (a.kind != Outcome::kValue) return true;
+  const double scale = 1.0 + a.translation.norm();
+  return a.stamp == b.stamp && (a.translation - b.translation).norm() < 1e-9 * scale &&
+         std::abs(a.rotation.dot(b.rotation)) > 1.0 - 1e-12;
+}
+
+template <class Lookup>
+Outcome oursOf(Lookup lookup) {
+  Outcome outcome;
+  try {
+    const TransformStamped result = lookup();
+    outcome.kind = Outcome::kValue;
+    outcome.stamp = toUtime(result.stamp);
+    outcome.translation = result.transform.translation;
+    outcome.rotation = result.transform.rotation;
+  } catch (const LookupException& e) {
+    outcome = {Outcome::kLookup, 0, {}, {}, e.what()};
+  } catch (const ConnectivityException& e) {
+    outcome = {Outcome::kConnectivity, 0, {}, {}, e.what()};
+  } catch (const ExtrapolationException& e) {
+    outcome = {Outcome::kExtrapolation, 0, {}, {}, e.what()};
+  } catch (const InvalidArgumentException& e) {
+    outcome = {Outcome::kInvalidArgument, 0, {}, {}, e.what()};
+  } catch (const std::exception& e) {
+    outcome = {Outcome::kOther, 0, {}, {}, e.what()};
+  }
+  return outcome;
+}
+
+template <class Lookup>
+Outcome theirsOf(Lookup lookup) {
+  Outcome outcome;
+  try {
+    const geometry_msgs::TransformStamped result = lookup();
+    const auto& t = result.transform.translation;
+    const auto& r = result.transform.rotation;
+    outcome.kind = Outcome::kValue;
+    outcome.stamp = utimeOf(result.header.stamp);
+    outcome.translation = Eigen::Vector3d(t.x, t.y, t.z);
+    outcome.rotation = Eigen::Quaterniond(r.w, r.x, r.y, r.z);
+  } catch (const tf2::LookupException& e) {
+    outcome = {Outcome::kLookup, 0, {}, {}, e.what()};
+  } catch (const tf2::ConnectivityException& e) {
+    outcome = {Outcome::kConnectivity, 0, {}, {}, e.what()};
+  } catch (const tf2::ExtrapolationException& e) {
+    outcome = {Outcome::kExtrapolation, 0, {}, {}, e.what()};
+  } catch (const tf2::InvalidArgumentException& e) {
+    outcome = {Outcome::kInvalidArgument, 0, {}, {}, e.what()};
+  } catch (const std::exception& e) {
+    outcome = {Outcome::kOther, 0, {}, {}, e.what()};
+  }
+  return outcome;
+}
+
+// One sample of an edge, as both libraries are given it.
+struct Sample {
+  std::string parent;
+  std::string child;
+  std::int64_t stamp = 0;
+  Eigen::Vector3d translation;
+  Eigen::Quaterniond rotation;
+  bool is_static = false;
+};
+
+// A random forest: frame i's parent is a frame before it, so no loops form even as edges
+// change parent, unless `loops` lets an edge's later parent be any other frame. Some frames
+// have no edge and root trees of their own.
+class RandomForest {
+ public:
+  RandomForest(unsigned seed, int frame_count, std::int64_t history,
+               const std::string& prefix = "frame_", bool loops = false)
+      : random_(seed), history_(history), loops_(loops) {
+    for (int i = 0; i < frame_count; ++i) names_.push_back(prefix + std::to_string(i));
+    for (int child = 1; child < frame_count; ++child) plan(child);
+    std::shuffle(samples_.begin(), samples_.end(), random_);
+    // Mostly in time order, as they arrive from a network, with some shuffled.
+    std::stable_sort(samples_.begin(), samples_.end(), [](const Sample& a, const Sample& b) {
+      return a.stamp / (kSecond / 2) < b.stamp / (kSecond / 2);
+    });
+  }
+
+  const std::vector<std::string>& names() const { return names_; }
+  const std::vector<Sample>& samples() const { return samples_; }
+  std::int64_t end() const { return kStart + history_; }
+
+  std::string randomFrame() {
+    const int pick = uniform(0, static_cast<int>(names_.size()) + 1);
+    if (pick == static_cast<int>(names_.size())) return "unknown_frame";
+    return names_[static_cast<std::size_t>(std::min(pick, static_cast<int>(names_.size()) - 1))];
+  }
+  std::int64_t randomTime() {
+    const int pick = uniform(0, 9);
+    if (pick == 0) return 0;
+    if (pick == 1 && !samples_.empty()) {
+      return samples_[static_cast<std::size_t>(uniform(0, static_cast<int>(samples_.size()) - 1))]
+          .stamp;
+    }
+    return kStart - kSecond / 2 +
+           std::uniform_int_distribution<std::int64_t>(0, history_ + kSecond)(random_);
+  }
+
+ private:
+  int uniform(int low, int high) { return std::uniform_int_distribution<int>(low, high)(random_); }
+  double real(double low, double high) {
+    return std::uniform_real_distribution<double>(low, high)(random_);
+  }
+  Eigen::Quaterniond randomRotation() {
+    Eigen::Quaterniond q(real(-1, 1), real(-1, 1), real(-1, 1), real(-1, 1));
+    return q.normalized();
+  }
+  std::string randomParentOf(int child) {
+    return names_[static_cast<std::size_t>(uniform(0, child - 1))];
+  }
+
+  void plan(int child) {
+    const int kind = uniform(0, 9);
+    if (kind == 0) return;  // a root of its own
+    std::string parent = randomParentOf(child);
+    if (kind <= 3) {
+      samples_.push_back({parent, names_[static_cast<std::size_t>(child)], 0,
+                          Eigen::Vector3d(real(-2, 2), real(-2, 2), real(-2, 2)), randomRotation(),
+                          true});
+      return;
+    }
+    // A dynamic edge: samples at its own rate over part or all of the history, turning by up to
+    // a quarter turn between samples, and in some edges changing parent once.
+    const std::int64_t period = kSecond / uniform(2, 50);
+    const std::int64_t first = kStart + (uniform(0, 3) == 0 ? uniform(0, 10) * history_ / 20 : 0);
+    const std::int64_t last = end() - (uniform(0, 3) == 0 ? uniform(0, 10) * history_ / 20 : 0);
+    const std::int64_t reparent_at = uniform(0, 3) == 0 ? (first + last) / 2 : last + 1;
+    std::string later_parent = randomParentOf(child);
+    if (loops_) {
+      const int other = uniform(0, static_cast<int>(names_.size()) - 2);
+      later_parent = names_[static_cast<std::size_t>(other >= child ? other + 1 : other)];
+    }
+    Eigen::Vector3d translation(real(-2, 2), real(-2, 2), real(-2, 2));
+    Eigen::Quaterniond rotation = randomRotation();
+    for (std::int64_t stamp = first + uniform(0, 1000); stamp <= last;
+         stamp += period + uniform(-1000, 1000)) {
+      translation += Eigen::Vector3d(real(-0.1, 0.1), real(-0.1, 0.1), real(-0.1, 0.1));
+      rotation = (rotation * Eigen::Quaterniond(Eigen::AngleAxisd(
+                                 real(-1.5, 1.5), randomRotation().vec().normalized())))
+                     .normalized();
+      samples_.push_back({stamp < reparent_at ? parent : later_parent,
+                          names_[static_cast<std::size_t>(child)], stamp, translation, rotation,
+                          false});
+    }
+  }
+
+  std::mt19937 random_;
+  std::int64_t history_;
+  bool loops_;
+  std::vector<std::string> names_;
+  std::vector<Sample> samples_;
+};
+
+class Tf2AgreementTest : public ::testing::TestWithParam<unsigned> {
+ protected:
+  static void SetUpTestSuite() {
+    console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_NONE);
+  }
+
+  void insertAll(const RandomForest& forest) {
+    for (const Sample& sample : forest.samples()) {
+      TransformStamped ours{fromUtime(sample.stamp), sample.parent, sample.child,
+                            Transform(sample.translation, sample.rotation)};
+      geometry_msgs::TransformStamped theirs;
+      theirs.header.stamp = rosTime(sample.stamp);
+      theirs.header.frame_id = sample.parent;
+      theirs.child_frame_id = sample.child;
+      theirs.transform.translation.x = sample.translation.x();
+      theirs.transform.translation.y = sample.translation.y();
+      theirs.transform.translation.z = sample.translation.z();
+      theirs.transform.rotation.x = sample.rotation.x();
+      theirs.transform.rotation.y = sample.rotation.y();
+      theirs.transform.rotation.z = sample.rotation.z();
+      theirs.transform.rotation.w = sample.rotation.w();
+      const bool ours_took = ours_.setTransform(ours, "test", sample.is_static);
+      const bool theirs_took = theirs_.setTransform(theirs, "test", sample.is_static);
+      ASSERT_EQ(ours_took, theirs_took)
+          << sample.child << " -> " << sample.parent << " at " << sample.stamp;
+    }
+  }
+
+  void expectAgreement(const std::string& question, const Outcome& ours, const Outcome& theirs) {
+    ++questions_;
+    if (ours.kind == Outcome::kValue) ++answered_;
+    EXPECT_TRUE(agree(ours, theirs))
+        << question << "\n  lcmtf: " << ours.describe() << "\n  tf2:   " << theirs.describe();
+  }
+
+  void askLookup(const std::string& target, const std::string& source, std::int64_t time) {
+    const std::string question =
+        "lookup of " + source + " in " + target + " at " + std::to_string(time);
+    expectAgreement(
+        question, oursOf([&] { return ours_.lookupTransform(target, source, fromUtime(time)); }),
+        theirsOf([&] { return theirs_.lookupTransform(target, source, rosTime(time)); }));
+    const bool ours_can = ours_.canTransform(target, source, fromUtime(time));
+    const bool theirs_can = theirs_.canTransform(target, source, rosTime(time));
+    EXPECT_EQ(ours_can, theirs_can) << "canTransform for the " << question;
+  }
+
+  void askTimeTravel(const std::string& target, std::int64_t target_time, const std::string& source,
+                     std::int64_t source_time, const std::string& fixed) {
+    const std::string question = "time-travel lookup of " + source + " at " +
+                                 std::to_string(source_time) + " in " + target + " at " +
+                                 std::to_string(target_time) + " through " + fixed;
+    expectAgreement(question, oursOf([&] {
+                      return ours_.lookupTransform(target, fromUtime(target_time), source,
+                                                   fromUtime(source_time), fixed);
+                    }),
+                    theirsOf([&] {
+                      return theirs_.lookupTransform(target, rosTime(target_time), source,
+                                                     rosTime(source_time), fixed);
+                    }));
+    const bool ours_can =
+        ours_.canTransform(target, fromUtime(target_time), source, fromUtime(source_time), fixed);
+    const bool theirs_can =
+        theirs_.canTransform(target, rosTime(target_time), source, rosTime(source_time), fixed);
+    EXPECT_EQ(ours_can, theirs_can) << "canTransform for the " << question;
+  }
+
+  void askMany(RandomForest& forest, int count) {
+    for (int i = 0; i < count && !HasFailure(); ++i) {
+      askLookup(forest.randomFrame(), forest.randomFrame(), forest.randomTime());
+      askTimeTravel(forest.randomFrame(), forest.randomTime(), forest.randomFrame(),
+                    forest.randomTime(), forest.randomFrame());
+    }
+  }
+
+  BufferCore ours_{std::chrono::seconds(10)};
+  tf2::BufferCore theirs_{ros::Duration(10.0)};
+  int questions_ = 0;
+  int answered_ = 0;
+};
+
+TEST_P(Tf2AgreementTest, EveryAnswerMatchesTf2InARandomForest) {
+  RandomForest forest(GetParam(), 16, 3 * kSecond);
+  insertAll(forest);
+  askMany(forest, 2000);
+  // Enough questions have answers for the agreement to mean something.
+  EXPECT_GT(answered_, questions_ / 20);
+}
+
+TEST_P(Tf2AgreementTest, EveryAnswerMatchesTf2AfterHistoryIsPruned) {
+  RandomForest forest(GetParam() + 1000, 12, 25 * kSecond);
+  insertAll(forest);
+  askMany(forest, 1000);
+  EXPECT_GT(answered_, questions_ / 20);
+}
+
+TEST_P(Tf2AgreementTest, EveryAnswerMatchesTf2AfterClear) {
+  RandomForest before(GetParam() + 2000, 12, 3 * kSecond);
+  insertAll(before);
+  ours_.clear();
+  theirs_.clear();
+  // Static edges outlive clear() in both; the cleared frames stay known, with no data.
+  RandomForest after(GetParam() + 3000, 12, 3 * kSecond, "later_");
+  insertAll(after);
+  askMany(after, 1000);
+  askMany(before, 500);
+  EXPECT_GT(answered_, questions_ / 20);
+}
+
+TEST_P(Tf2AgreementTest, EveryAnswerMatchesTf2WhenEdgesCloseLoops) {
+  RandomForest forest(GetParam() + 4000, 12, 3 * kSecond, "frame_", true);
+  insertAll(forest);
+  askMany(forest, 1000);
+  EXPECT_GT(answered_, questions_ / 20);
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, Tf2AgreementTest, ::testing::Range(1u, 21u));
+
+}  // namespace
+}  // namespace lcmtf
