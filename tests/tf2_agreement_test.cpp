@@ -1,8 +1,9 @@
 // lcmtf's BufferCore gives ROS tf2's answers. Random forests of frames (static and dynamic
 // edges, edges that change parent, samples inserted out of order, histories long enough to be
 // pruned) are given to both libraries alike; then the same lookups, latest-time lookups,
-// time-travel lookups and canTransform questions go to both, and every answer must agree: the
-// same value and stamp, or the same kind of error. Built only where ROS tf2 is installed.
+// time-travel lookups, canTransform and parent questions go to both, and every answer must
+// agree: the same value and stamp, or the same kind of error. Built only where ROS tf2 is
+// installed.
 //
 // Left out on purpose, where lcmtf is specified to differ: a repeated stamp (tf2 keeps the
 // first sample, lcmtf the newer one), names with a leading '/' (tf2 refuses them, lcmtf strips
@@ -291,8 +292,21 @@ class Tf2AgreementTest : public ::testing::TestWithParam<unsigned> {
     EXPECT_EQ(ours_can, theirs_can) << "canTransform for the " << question;
   }
 
+  void askAboutFrame(const std::string& frame, std::int64_t time) {
+    EXPECT_EQ(ours_.frameExists(frame), theirs_._frameExists(frame)) << frame;
+    std::string ours_parent;
+    std::string theirs_parent;
+    const bool ours_has = ours_.getParent(frame, fromUtime(time), ours_parent);
+    const bool theirs_has = theirs_._getParent(frame, rosTime(time), theirs_parent);
+    EXPECT_EQ(ours_has, theirs_has) << "parent of " << frame << " at " << time;
+    if (ours_has && theirs_has) {
+      EXPECT_EQ(ours_parent, theirs_parent) << frame << " at " << time;
+    }
+  }
+
   void askMany(RandomForest& forest, int count) {
     for (int i = 0; i < count && !HasFailure(); ++i) {
+      askAboutFrame(forest.randomFrame(), forest.randomTime());
       askLookup(forest.randomFrame(), forest.randomFrame(), forest.randomTime());
       askTimeTravel(forest.randomFrame(), forest.randomTime(), forest.randomFrame(),
                     forest.randomTime(), forest.randomFrame());
