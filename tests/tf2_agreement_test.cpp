@@ -18,6 +18,7 @@
 #include <tf2/exceptions.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <string>
@@ -242,24 +243,31 @@ class Tf2AgreementTest : public ::testing::TestWithParam<unsigned> {
 
   void insertAll(const RandomForest& forest) {
     for (const Sample& sample : forest.samples()) {
-      TransformStamped ours{fromUtime(sample.stamp), sample.parent, sample.child,
-                            Transform(sample.translation, sample.rotation)};
-      geometry_msgs::TransformStamped theirs;
-      theirs.header.stamp = rosTime(sample.stamp);
-      theirs.header.frame_id = sample.parent;
-      theirs.child_frame_id = sample.child;
-      theirs.transform.translation.x = sample.translation.x();
-      theirs.transform.translation.y = sample.translation.y();
-      theirs.transform.translation.z = sample.translation.z();
-      theirs.transform.rotation.x = sample.rotation.x();
-      theirs.transform.rotation.y = sample.rotation.y();
-      theirs.transform.rotation.z = sample.rotation.z();
-      theirs.transform.rotation.w = sample.rotation.w();
-      const bool ours_took = ours_.setTransform(ours, "test", sample.is_static);
-      const bool theirs_took = theirs_.setTransform(theirs, "test", sample.is_static);
-      ASSERT_EQ(ours_took, theirs_took)
-          << sample.child << " -> " << sample.parent << " at " << sample.stamp;
+      insert(sample);
+      if (HasFailure()) return;
     }
+  }
+
+  // Whether lcmtf took the sample, which tf2 must have done alike.
+  bool insert(const Sample& sample) {
+    TransformStamped ours{fromUtime(sample.stamp), sample.parent, sample.child,
+                          Transform(sample.translation, sample.rotation)};
+    geometry_msgs::TransformStamped theirs;
+    theirs.header.stamp = rosTime(sample.stamp);
+    theirs.header.frame_id = sample.parent;
+    theirs.child_frame_id = sample.child;
+    theirs.transform.translation.x = sample.translation.x();
+    theirs.transform.translation.y = sample.translation.y();
+    theirs.transform.translation.z = sample.translation.z();
+    theirs.transform.rotation.x = sample.rotation.x();
+    theirs.transform.rotation.y = sample.rotation.y();
+    theirs.transform.rotation.z = sample.rotation.z();
+    theirs.transform.rotation.w = sample.rotation.w();
+    const bool ours_took = ours_.setTransform(ours, "test", sample.is_static);
+    const bool theirs_took = theirs_.setTransform(theirs, "test", sample.is_static);
+    EXPECT_EQ(ours_took, theirs_took)
+        << sample.child << " -> " << sample.parent << " at " << sample.stamp;
+    return ours_took;
   }
 
   void expectAgreement(const std::string& question, const Outcome& ours, const Outcome& theirs) {
@@ -353,6 +361,43 @@ TEST_P(Tf2AgreementTest, EveryAnswerMatchesTf2AfterClear) {
   askMany(after, 1000);
   askMany(before, 500);
   EXPECT_GT(answered_, questions_ / 20);
+}
+
+// A sample both libraries must refuse, made from a good one.
+Sample flawed(Sample sample, int flaw) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  switch (flaw % 6) {
+    case 0:
+      sample.parent = sample.child;
+      break;
+    case 1:
+      sample.parent.clear();
+      break;
+    case 2:
+      sample.child.clear();
+      break;
+    case 3:
+      sample.translation.y() = nan;
+      break;
+    case 4:
+      sample.rotation.coeffs() << 0, std::numeric_limits<double>::infinity(), 0, 1;
+      break;
+    default:
+      sample.rotation.coeffs().setZero();
+      break;
+  }
+  return sample;
+}
+
+TEST_P(Tf2AgreementTest, BadSamplesAreRefusedByBothAndChangeNoAnswer) {
+  RandomForest forest(GetParam() + 5000, 12, 3 * kSecond);
+  int flaw = 0;
+  for (const Sample& sample : forest.samples()) {
+    insert(sample);
+    EXPECT_FALSE(insert(flawed(sample, flaw++)));
+    if (HasFailure()) return;
+  }
+  askMany(forest, 500);
 }
 
 TEST_P(Tf2AgreementTest, EveryAnswerMatchesTf2WhenEdgesCloseLoops) {
