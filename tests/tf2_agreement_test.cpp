@@ -7,7 +7,8 @@
 //
 // Left out on purpose, where lcmtf is specified to differ: a repeated stamp (tf2 keeps the
 // first sample, lcmtf the newer one), names with a leading '/' (tf2 refuses them, lcmtf strips
-// the slash) and error messages. One difference is allowed in the answers: where the frames'
+// the slash), rotations slightly off unit length (tf2 refuses them, lcmtf normalizes those
+// within 1e-3) and error messages. One difference is allowed in the answers: where the frames'
 // trees do not meet, lcmtf reports them not connected even when an edge on the way also lacks
 // data at the time asked, as it knows that edge's parent from its nearest sample; tf2 stops at
 // such an edge and reports the missing data.
