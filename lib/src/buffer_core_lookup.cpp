@@ -204,7 +204,8 @@ LookupFailure BufferCore::Impl::climb(FrameId target, FrameId source, std::int64
     // Filled in place: a copy of a freshly written edge would stall on store forwarding.
     PathEdge& edge = source_edges.emplace_back();
     stepUp(frames_, frame, stamp, edge);
-    const bool missing_data = edge.status != SampleStatus::kOk && !through_missing_data;
+    const bool missing_data =
+        edge.parent != kNoFrame && edge.status != SampleStatus::kOk && !through_missing_data;
     if (edge.parent == kNoFrame || missing_data) {
       if (missing_data) source_stopped = missingData(frames_, edge, stamp);
       source_edges.pop_back();
