@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <functional>
 #include <map>
@@ -18,6 +19,18 @@
 #include "time_cache.hpp"
 
 namespace lcmtf {
+
+/// The newest stamp at which every dynamic edge added so far has data, once there is one: the
+/// latest common time of a path (0 when it has no dynamic edge).
+struct CommonNewest {
+  std::int64_t stamp = 0;
+  bool any_dynamic = false;
+
+  void add(std::int64_t newest) {
+    stamp = any_dynamic ? std::min(stamp, newest) : newest;
+    any_dynamic = true;
+  }
+};
 
 /// An edge on the path a walk takes.
 struct PathEdge {

@@ -132,17 +132,13 @@ LookupFailure sampleEdges(const std::vector<FrameRecord>& frames, std::vector<Pa
 std::int64_t commonNewest(const std::vector<FrameRecord>& frames,
                           const std::vector<PathEdge>& source_edges,
                           const std::vector<PathEdge>& target_edges) {
-  bool any_dynamic = false;
-  std::int64_t common = 0;
+  CommonNewest common;
   for (const auto* edges : {&source_edges, &target_edges}) {
     for (const PathEdge& edge : *edges) {
-      if (!edge.isDynamic()) continue;
-      const std::int64_t newest = frames[edge.child].cache.newestStamp();
-      common = any_dynamic ? std::min(common, newest) : newest;
-      any_dynamic = true;
+      if (edge.isDynamic()) common.add(frames[edge.child].cache.newestStamp());
     }
   }
-  return common;
+  return common.stamp;
 }
 
 }  // namespace
@@ -186,6 +182,11 @@ LookupFailure BufferCore::Impl::climb(FrameId target, FrameId source, std::int64
     return failure;
   };
 
+  // An edge with samples, none of them at `stamp`, unless told to go through those.
+  auto stopsAt = [&](const PathEdge& edge) {
+    return edge.parent != kNoFrame && edge.status != SampleStatus::kOk && !through_missing_data;
+  };
+
   // Every frame the source's walk reaches is marked with its place in the walk; the target's
   // walk stops at the first marked frame, their common ancestor. Unless told to go through,
   // the source's walk ends below an edge without data at `stamp` (the target's walk may still
@@ -204,8 +205,7 @@ LookupFailure BufferCore::Impl::climb(FrameId target, FrameId source, std::int64
     // Filled in place: a copy of a freshly written edge would stall on store forwarding.
     PathEdge& edge = source_edges.emplace_back();
     stepUp(frames_, frame, stamp, edge);
-    const bool missing_data =
-        edge.parent != kNoFrame && edge.status != SampleStatus::kOk && !through_missing_data;
+    const bool missing_data = stopsAt(edge);
     if (edge.parent == kNoFrame || missing_data) {
       if (missing_data) source_stopped = missingData(frames_, edge, stamp);
       source_edges.pop_back();
@@ -225,9 +225,7 @@ LookupFailure BufferCore::Impl::climb(FrameId target, FrameId source, std::int64
     }
     PathEdge& edge = target_edges.emplace_back();
     stepUp(frames_, frame, stamp, edge);
-    if (edge.parent != kNoFrame && edge.status != SampleStatus::kOk && !through_missing_data) {
-      return missingData(frames_, edge, stamp);
-    }
+    if (stopsAt(edge)) return missingData(frames_, edge, stamp);
     if (edge.parent == kNoFrame) {
       target_edges.pop_back();
       if (source_stopped) return source_stopped;

@@ -72,17 +72,6 @@ MeetingPoint meetingPoint(const RootPaths::Path& up_from_source,
   return meeting;
 }
 
-// The newest stamp at which every dynamic edge seen so far has data, if there has been one.
-struct CommonNewest {
-  std::int64_t stamp = 0;
-  bool any_dynamic = false;
-
-  void add(std::int64_t newest) {
-    stamp = any_dynamic ? std::min(stamp, newest) : newest;
-    any_dynamic = true;
-  }
-};
-
 // Fills `out` with the steps of one side; false when a dynamic edge among them has changed
 // parent within its history (the tree at `stamp` may not be the paths'), or has no data at
 // `stamp` (0: both checked later, and each edge's newest stamp added to `common_newest`).
@@ -154,6 +143,12 @@ bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frame
   return true;
 }
 
+// The path's target_T_source from the value of each of its steps.
+void productOf(const QuickPath& path, const Transform* const* values, Transform& target_T_source) {
+  detail::pathProduct(values, path.source_count, values + path.source_count, path.target_count,
+                      target_T_source);
+}
+
 // The values of the steps of one or more paths, with the interpolations they need run in one
 // batch.
 template <std::size_t Paths>
@@ -201,8 +196,7 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
     const Transform* values[kMostSteps];
     sampler.sample(path, values);
     sampler.run();
-    detail::pathProduct(values, path.source_count, values + path.source_count, path.target_count,
-                        *value);
+    productOf(path, values, *value);
   }
   stamp = path.at;
   return true;
@@ -226,12 +220,8 @@ bool BufferCore::Impl::quickTimeTravel(FrameId target, std::int64_t& target_stam
   sampler.run();
   Transform fixed_T_source;
   Transform target_T_fixed;
-  detail::pathProduct(source_values, source_path.source_count,
-                      source_values + source_path.source_count, source_path.target_count,
-                      fixed_T_source);
-  detail::pathProduct(target_values, target_path.source_count,
-                      target_values + target_path.source_count, target_path.target_count,
-                      target_T_fixed);
+  productOf(source_path, source_values, fixed_T_source);
+  productOf(target_path, target_values, target_T_fixed);
   value = detail::composed(target_T_fixed, fixed_T_source);
   source_stamp = source_path.at;
   target_stamp = target_path.at;
