@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
 
 #include "lcmtf/buffer.hpp"
@@ -181,6 +183,103 @@ TEST(DoTransform, WrenchOfAWeightOnALeverArm) {
   const Wrench at_shoulder = transformed(shoulder_T_tip, at_tip);
   EXPECT_LE((at_shoulder.force - Eigen::Vector3d(0, 0, -10)).norm(), kTolerance);
   EXPECT_LE((at_shoulder.torque - Eigen::Vector3d(0, 20, 0)).norm(), kTolerance);
+}
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Equal coordinate by coordinate, where two NaNs count as equal.
+testing::AssertionResult sameCoordinates(const Eigen::Vector3d& actual,
+                                         const Eigen::Vector3d& expected) {
+  for (int i = 0; i < 3; ++i) {
+    const bool both_nan = std::isnan(actual[i]) && std::isnan(expected[i]);
+    if (!both_nan && actual[i] != expected[i]) {
+      return testing::AssertionFailure()
+             << "[" << actual.transpose() << "] is not [" << expected.transpose() << "]";
+    }
+  }
+  return testing::AssertionSuccess();
+}
+
+// The same point through every form that moves a point, and every one that rotates a vector.
+void expectEveryFormGives(const Transform& target_T_source, const Eigen::Vector3d& in,
+                          const Eigen::Vector3d& expected_point,
+                          const Eigen::Vector3d& expected_direction) {
+  Eigen::Matrix3Xd cloud(3, 1);
+  cloud.col(0) = in;
+  const Transform pose(in, Eigen::Quaterniond::Identity());
+  const Eigen::Isometry3d isometry{Eigen::Translation3d(in)};
+  EXPECT_TRUE(sameCoordinates(transformed(target_T_source, in), expected_point));
+  EXPECT_TRUE(sameCoordinates(target_T_source * in, expected_point));
+  EXPECT_TRUE(sameCoordinates(transformed(target_T_source, cloud).col(0), expected_point));
+  EXPECT_TRUE(sameCoordinates(transformed(target_T_source, std::vector<Eigen::Vector3d>{in})[0],
+                              expected_point));
+  EXPECT_TRUE(sameCoordinates(transformed(target_T_source, pose).translation, expected_point));
+  EXPECT_TRUE(
+      sameCoordinates(transformed(target_T_source, isometry).translation(), expected_point));
+  EXPECT_TRUE(sameCoordinates(
+      transformed(target_T_source, PoseWithCovariance{pose, {}}).pose.translation, expected_point));
+  EXPECT_TRUE(
+      sameCoordinates(transformed(target_T_source, Direction{in}).value, expected_direction));
+  EXPECT_TRUE(sameCoordinates(target_T_source.rotate(in), expected_direction));
+  EXPECT_TRUE(
+      sameCoordinates(transformed(target_T_source, Wrench{in, {}}).force, expected_direction));
+  EXPECT_TRUE(
+      sameCoordinates(transformed(target_T_source, Twist{{}, in}).angular, expected_direction));
+}
+
+TEST(DoTransform, PointWithInfiniteCoordinateMatchesCloudForm) {
+  // No entry of this rotation's matrix is zero: one infinite coordinate makes all three
+  // infinite, with the signs of the first column.
+  const Transform target_T_source(Eigen::Vector3d(1, 2, 3),
+                                  Eigen::Quaterniond(0.5, 0.5, -0.1, 0.7).normalized());
+  const Eigen::Vector3d signs = target_T_source.rotation.toRotationMatrix().col(0).cwiseSign();
+  expectEveryFormGives(target_T_source, Eigen::Vector3d(kInf, 1, 2), kInf * signs, kInf * signs);
+}
+
+TEST(DoTransform, InfiniteCoordinateIsNaNWhereTheRotationMatrixHasAZero) {
+  // A quarter turn about z from a normalized quaternion: R = [0 -1 0; 1 0 0; 0 0 1] with its
+  // zeros exact, and 0 * inf is NaN.
+  const Transform target_T_source(Eigen::Vector3d(1, 2, 3),
+                                  Eigen::Quaterniond(1, 0, 0, 1).normalized());
+  const Eigen::Vector3d in(kInf, 1, 2);
+  expectEveryFormGives(target_T_source, in, Eigen::Vector3d(kNaN, kInf, kNaN),
+                       Eigen::Vector3d(kNaN, kInf, kNaN));
+}
+
+TEST(DoTransform, NaNCoordinatePassesThroughEveryForm) {
+  const Transform target_T_source(Eigen::Vector3d(1, 2, 3),
+                                  Eigen::Quaterniond(0.5, 0.5, -0.1, 0.7).normalized());
+  const Eigen::Vector3d all_nan(kNaN, kNaN, kNaN);
+  expectEveryFormGives(target_T_source, Eigen::Vector3d(kNaN, 1, 2), all_nan, all_nan);
+}
+
+TEST(DoTransform, NaNInAWrenchPassesThroughTheLeverArm) {
+  const Transform target_T_source(Eigen::Vector3d(2, 0, 0), Eigen::Quaterniond::Identity());
+  const Eigen::Vector3d all_nan(kNaN, kNaN, kNaN);
+  // A NaN force reaches the torque too, through the lever arm p x (R f).
+  const Wrench bad_force = transformed(target_T_source, Wrench{all_nan, Eigen::Vector3d(1, 2, 3)});
+  EXPECT_TRUE(sameCoordinates(bad_force.force, all_nan));
+  EXPECT_TRUE(sameCoordinates(bad_force.torque, all_nan));
+  // A NaN torque stays in the torque; the force is untouched.
+  const Wrench bad_torque =
+      transformed(target_T_source, Wrench{Eigen::Vector3d(0, 0, -10), all_nan});
+  EXPECT_EQ(bad_torque.force, Eigen::Vector3d(0, 0, -10));
+  EXPECT_TRUE(sameCoordinates(bad_torque.torque, all_nan));
+}
+
+TEST(DoTransform, CovarianceWithInfiniteRotationBlockKeepsPositionBlockFinite) {
+  const Transform target_T_source(Eigen::Vector3d(1, 2, 3),
+                                  Eigen::Quaterniond(0.5, 0.5, -0.1, 0.7).normalized());
+  Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Identity();
+  covariance.bottomRightCorner<3, 3>() *= kInf;
+  const PoseWithCovariance moved =
+      transformed(target_T_source, PoseWithCovariance{Transform(), covariance});
+  const Eigen::Matrix3d position = moved.covariance.topLeftCorner<3, 3>();
+  EXPECT_LE((position - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), kTolerance);
+  EXPECT_EQ(moved.covariance.topRightCorner(3, 3), Eigen::Matrix3d::Zero());
+  EXPECT_EQ(moved.covariance.bottomLeftCorner(3, 3), Eigen::Matrix3d::Zero());
+  EXPECT_FALSE(moved.covariance.bottomRightCorner(3, 3).allFinite());
 }
 
 TEST(DoTransform, StampedResultTakesTheTransformsFrameAndStamp) {

@@ -84,6 +84,12 @@ TEST_P(TransformProperties, RotateIgnoresTranslation) {
             kTolerance);
 }
 
+TEST_P(TransformProperties, RotationMatrixIsTheQuaternionsRotation) {
+  const Transform& a_T_b = GetParam();
+  EXPECT_LE((a_T_b.rotationMatrix() - a_T_b.rotation.toRotationMatrix()).cwiseAbs().maxCoeff(),
+            kTolerance);
+}
+
 TEST_P(TransformProperties, IsometryRoundTrip) {
   expectSameTransform(Transform::fromIsometry(GetParam().toIsometry()), GetParam(), 1e-12);
 }
@@ -115,6 +121,21 @@ INSTANTIATE_TEST_SUITE_P(Samples, TransformProperties, ::testing::ValuesIn(sampl
                          [](const auto& sample) {
                            return "sample" + std::to_string(sample.index);
                          });
+
+TEST(Transform, RotationMatrixOfANormalizedQuarterTurnHasExactZeros) {
+  // 1/sqrt(2) rounds so that |q|^2 is not exactly 1; the matrix's zeros must stay exact.
+  const Transform quarter_turn(Eigen::Vector3d::Zero(),
+                               Eigen::Quaterniond(1, 0, 0, 1).normalized());
+  Eigen::Matrix3d expected;
+  expected << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  EXPECT_EQ(quarter_turn.rotationMatrix(), expected);
+}
+
+TEST(Transform, RotationMatrixOfAnUnnormalizedQuaternionIsOrthonormal) {
+  const Eigen::Quaterniond unit = axisAngle(0.7, Eigen::Vector3d(1, -2, 3));
+  const Transform scaled(Eigen::Vector3d::Zero(), Eigen::Quaterniond(3.0 * unit.coeffs()));
+  EXPECT_LE((scaled.rotationMatrix() - unit.toRotationMatrix()).cwiseAbs().maxCoeff(), kTolerance);
+}
 
 TEST(Transform, DefaultIsIdentity) {
   const Transform t;

@@ -2,6 +2,9 @@
 
 namespace lcmtf {
 
+// Every form below rotates through the same 3x3 matrix, so each coordinate of a result is a
+// sum of products: infinite and NaN inputs come out the same whichever form carries them.
+
 Eigen::Vector3d transformed(const Transform& target_T_source, const Eigen::Vector3d& point) {
   return target_T_source * point;
 }
@@ -16,7 +19,7 @@ Eigen::Quaterniond transformed(const Transform& target_T_source,
 }
 
 Transform transformed(const Transform& target_T_source, const Transform& pose) {
-  return target_T_source * pose;
+  return Transform(target_T_source * pose.translation, target_T_source.rotation * pose.rotation);
 }
 
 Eigen::Isometry3d transformed(const Transform& target_T_source, const Eigen::Isometry3d& pose) {
@@ -25,7 +28,7 @@ Eigen::Isometry3d transformed(const Transform& target_T_source, const Eigen::Iso
 
 Eigen::Matrix3Xd transformed(const Transform& target_T_source, const Eigen::Matrix3Xd& cloud) {
   // One pass over the points, rotation as a matrix: memory, not arithmetic, bounds this.
-  const Eigen::Matrix3d rotation = target_T_source.rotation.toRotationMatrix();
+  const Eigen::Matrix3d rotation = target_T_source.rotationMatrix();
   const Eigen::Vector3d translation = target_T_source.translation;
   Eigen::Matrix3Xd result(3, cloud.cols());
   for (Eigen::Index i = 0; i < cloud.cols(); ++i) {
@@ -36,7 +39,7 @@ Eigen::Matrix3Xd transformed(const Transform& target_T_source, const Eigen::Matr
 
 std::vector<Eigen::Vector3d> transformed(const Transform& target_T_source,
                                          const std::vector<Eigen::Vector3d>& cloud) {
-  const Eigen::Matrix3d rotation = target_T_source.rotation.toRotationMatrix();
+  const Eigen::Matrix3d rotation = target_T_source.rotationMatrix();
   const Eigen::Vector3d translation = target_T_source.translation;
   std::vector<Eigen::Vector3d> result(cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i) result[i] = rotation * cloud[i] + translation;
@@ -44,24 +47,30 @@ std::vector<Eigen::Vector3d> transformed(const Transform& target_T_source,
 }
 
 Twist transformed(const Transform& target_T_source, const Twist& twist) {
-  const Eigen::Vector3d angular = target_T_source.rotate(twist.angular);
-  return Twist{target_T_source.rotate(twist.linear) + target_T_source.translation.cross(angular),
-               angular};
+  const Eigen::Matrix3d rotation = target_T_source.rotationMatrix();
+  const Eigen::Vector3d angular = rotation * twist.angular;
+  return Twist{rotation * twist.linear + target_T_source.translation.cross(angular), angular};
 }
 
 Wrench transformed(const Transform& target_T_source, const Wrench& wrench) {
-  const Eigen::Vector3d force = target_T_source.rotate(wrench.force);
-  return Wrench{force,
-                target_T_source.rotate(wrench.torque) + target_T_source.translation.cross(force)};
+  const Eigen::Matrix3d rotation = target_T_source.rotationMatrix();
+  const Eigen::Vector3d force = rotation * wrench.force;
+  return Wrench{force, rotation * wrench.torque + target_T_source.translation.cross(force)};
 }
 
 PoseWithCovariance transformed(const Transform& target_T_source, const PoseWithCovariance& pose) {
-  const Eigen::Matrix3d rotation = target_T_source.rotation.toRotationMatrix();
-  Eigen::Matrix<double, 6, 6> jacobian = Eigen::Matrix<double, 6, 6>::Zero();
-  jacobian.topLeftCorner<3, 3>() = rotation;
-  jacobian.bottomRightCorner<3, 3>() = rotation;
-  return PoseWithCovariance{target_T_source * pose.pose,
-                            jacobian * pose.covariance * jacobian.transpose()};
+  // J S J^T with J = diag(R, R), block by block: J's zero blocks never multiply S, so an
+  // infinite variance in one block cannot turn the other blocks into NaN.
+  const Eigen::Matrix3d rotation = target_T_source.rotationMatrix();
+  const Eigen::Matrix3d rotation_transposed = rotation.transpose();
+  Eigen::Matrix<double, 6, 6> covariance;
+  for (int row = 0; row < 6; row += 3) {
+    for (int col = 0; col < 6; col += 3) {
+      const Eigen::Matrix3d rotated_rows = rotation * pose.covariance.block<3, 3>(row, col);
+      covariance.block<3, 3>(row, col) = rotated_rows * rotation_transposed;
+    }
+  }
+  return PoseWithCovariance{transformed(target_T_source, pose.pose), covariance};
 }
 
 }  // namespace lcmtf

@@ -7,9 +7,28 @@
 
 namespace lcmtf {
 
+Eigen::Matrix3d Transform::rotationMatrix() const {
+  const double x = rotation.x();
+  const double y = rotation.y();
+  const double z = rotation.z();
+  const double w = rotation.w();
+  const double scale = 2.0 / (x * x + y * y + z * z + w * w);
+  const double xs = x * scale;
+  const double ys = y * scale;
+  const double zs = z * scale;
+  const double xx = x * xs, xy = x * ys, xz = x * zs;
+  const double yy = y * ys, yz = y * zs, zz = z * zs;
+  const double wx = w * xs, wy = w * ys, wz = w * zs;
+  Eigen::Matrix3d matrix;
+  matrix << 1.0 - (yy + zz), xy - wz, xz + wy,  //
+      xy + wz, 1.0 - (xx + zz), yz - wx,        //
+      xz - wy, yz + wx, 1.0 - (xx + yy);
+  return matrix;
+}
+
 Eigen::Isometry3d Transform::toIsometry() const {
   Eigen::Isometry3d isometry = Eigen::Isometry3d::Identity();
-  isometry.linear() = rotation.toRotationMatrix();
+  isometry.linear() = rotationMatrix();
   isometry.translation() = translation;
   return isometry;
 }

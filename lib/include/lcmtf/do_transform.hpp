@@ -14,6 +14,8 @@ namespace lcmtf {
 
 /// `target_T_source` applied to data given in the source frame; the result is in the target.
 /// Points and clouds are rotated and translated; directions and orientations only rotated.
+/// Every form rotates by the same rotationMatrix(): NaN and infinite inputs come out alike in
+/// each, coordinate by coordinate, as tf2's do.
 Eigen::Vector3d transformed(const Transform& target_T_source, const Eigen::Vector3d& point);
 Direction transformed(const Transform& target_T_source, const Direction& direction);
 Eigen::Quaterniond transformed(const Transform& target_T_source,
@@ -29,7 +31,8 @@ std::vector<Eigen::Vector3d> transformed(const Transform& target_T_source,
 Twist transformed(const Transform& target_T_source, const Twist& twist);
 /// Force rotated; torque rotated plus p x (R f), so it is taken about the target's origin.
 Wrench transformed(const Transform& target_T_source, const Wrench& wrench);
-/// Pose composed; covariance rotated into the target frame: J S J^T with J = diag(R, R).
+/// Pose composed; covariance rotated into the target frame: J S J^T with J = diag(R, R),
+/// block by block, so an infinite variance in one 3x3 block leaves the other blocks finite.
 PoseWithCovariance transformed(const Transform& target_T_source, const PoseWithCovariance& pose);
 
 /// Transforms stamped data with a transform from lookupTransform(target, data's frame, ...):

@@ -22,13 +22,18 @@ struct Transform {
     return Transform(-(inverse_rotation * translation), inverse_rotation);
   }
 
-  /// A point given in the child frame, expressed in the parent frame.
+  /// The rotation as a 3x3 matrix, scaled by 2/|q|^2: an unnormalized quaternion gives its
+  /// rotation, and a rounded unit quaternion of a quarter turn gives exact zeros and ones.
+  Eigen::Matrix3d rotationMatrix() const;
+
+  /// A point given in the child frame, expressed in the parent frame: R p + t with R a matrix,
+  /// so an infinite coordinate stays infinite wherever its column of R is non-zero.
   Eigen::Vector3d operator*(const Eigen::Vector3d& point) const {
-    return rotation * point + translation;
+    return rotationMatrix() * point + translation;
   }
 
   /// A direction given in the child frame, expressed in the parent frame (rotation only).
-  Eigen::Vector3d rotate(const Eigen::Vector3d& vector) const { return rotation * vector; }
+  Eigen::Vector3d rotate(const Eigen::Vector3d& vector) const { return rotationMatrix() * vector; }
 
   Transform operator*(const Transform& child_T_grandchild) const {
     return Transform(rotation * child_T_grandchild.translation + translation,
