@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <condition_variable>
+#include <stdexcept>
 #include <thread>
 
 namespace lcmtf {
@@ -124,6 +125,32 @@ TEST_F(MessageFilterTest, FullQueueDropsTheOldestWithItsReason) {
   buffer.setTransform(edge("map", "camera", 1'000'000), "test");
   EXPECT_EQ(recorder.passed(), (std::vector<int>{2, 3}));
   EXPECT_EQ(filter->statistics().droppedCount(FilterDropReason::kQueueFull), 1u);
+}
+
+TEST_F(MessageFilterTest, TransformableMessagePassesWithoutEvictingFromAFullQueue) {
+  buffer.setTransform(edge("map", "camera", 1'000'000), "test");
+  MessageFilterOptions options = targets({"map"});
+  options.queue_size = 2;
+  auto filter = makeFilter(options);
+  filter->add({"camera", fromUtime(1'500'000), 1});
+  filter->add({"camera", fromUtime(1'500'000), 2});
+  filter->add({"camera", fromUtime(1'000'000), 3});
+  EXPECT_EQ(recorder.passed(), std::vector<int>{3});
+  EXPECT_TRUE(recorder.dropped().empty());
+  EXPECT_EQ(filter->pending(), 2u);
+  buffer.setTransform(edge("map", "camera", 2'000'000), "test");
+  EXPECT_EQ(recorder.passed(), (std::vector<int>{3, 1, 2}));
+}
+
+TEST_F(MessageFilterTest, ZeroQueueSizeIsRefused) {
+  MessageFilterOptions options = targets({"map"});
+  options.queue_size = 0;
+  try {
+    makeFilter(options);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_THAT(e.what(), HasSubstr("queue_size"));
+  }
 }
 
 TEST_F(MessageFilterTest, MessageThatWaitsTooLongIsDroppedOnItsOwn) {

@@ -2,6 +2,7 @@
 
 #include <condition_variable>
 #include <optional>
+#include <stdexcept>
 
 #include "future_deadlines.hpp"
 
@@ -49,17 +50,13 @@ class MessageFilterCore::State : public std::enable_shared_from_this<State> {
     std::vector<Outcome> outcomes;
     {
       std::lock_guard<std::mutex> guard(mutex);
-      if (options.queue_size == 0 || waiting.size() >= options.queue_size) {
-        if (!waiting.empty()) {
-          outcomes.push_back(
-              remove(waiting.begin()->first, FilterDropReason::kQueueFull,
-                     "the queue of " + std::to_string(options.queue_size) + " messages was full"));
-        } else {
-          ++statistics.dropped[static_cast<std::size_t>(FilterDropReason::kQueueFull)];
-          outcomes.push_back({id, false, FilterDropReason::kQueueFull, "the queue size is 0"});
-        }
+      admit(id, frame, stamp, outcomes);
+      // Only a message left waiting takes a place; the oldest, never this newest, makes room.
+      if (waiting.size() > options.queue_size) {
+        outcomes.push_back(
+            remove(waiting.begin()->first, FilterDropReason::kQueueFull,
+                   "the queue of " + std::to_string(options.queue_size) + " messages was full"));
       }
-      if (outcomes.empty() || outcomes.back().id != id) admit(id, frame, stamp, outcomes);
     }
     deliver(outcomes);
   }
@@ -210,8 +207,18 @@ class MessageFilterCore::State : public std::enable_shared_from_this<State> {
   bool alive = true;
 };
 
+namespace {
+MessageFilterOptions checked(MessageFilterOptions options) {
+  if (options.queue_size == 0) {
+    throw std::invalid_argument(
+        "MessageFilter: queue_size must be at least 1; an unbounded queue is not offered");
+  }
+  return options;
+}
+}  // namespace
+
 MessageFilterCore::MessageFilterCore(Buffer& buffer, MessageFilterOptions options)
-    : state_(std::make_shared<State>(buffer, std::move(options), *this)) {}
+    : state_(std::make_shared<State>(buffer, checked(std::move(options)), *this)) {}
 
 MessageFilterCore::~MessageFilterCore() = default;
 

@@ -25,8 +25,10 @@ const char* describe(FilterDropReason reason);
 
 /// How a MessageFilter waits.
 struct MessageFilterOptions {
-  std::vector<std::string> target_frames;      ///< every one must be reachable
-  std::size_t queue_size = 100;                ///< messages waiting at most
+  std::vector<std::string> target_frames;  ///< every one must be reachable
+  /// Messages waiting at most, at least 1: the constructor throws std::invalid_argument on 0
+  /// rather than wait without bound for whatever the network sends.
+  std::size_t queue_size = 100;
   Duration timeout = std::chrono::seconds(1);  ///< zero: wait until the cache drops it
 };
 
@@ -85,7 +87,8 @@ class MessageFilter : public MessageFilterCore {
         dropped_(std::move(dropped)) {}
   ~MessageFilter() override { shutdown(); }
 
-  /// Passes `message` on now if it can be transformed, else queues it.
+  /// Passes `message` on now if it can be transformed, leaving the queue as it is; else
+  /// queues it, and when the queue is full the oldest waiting message is dropped to make room.
   void add(Message message) {
     const std::string frame = frame_of_(message);
     const TimePoint stamp = stamp_of_(message);
