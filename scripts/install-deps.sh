@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages lcmtf builds and tests with, only those that are missing.
+# With --tests it also installs what only the tests use: ROS tf2 (libtf2-dev and the
+# geometry_msgs headers), which the agreement test checks lcmtf against. Nothing lcmtf builds
+# for users links it.
 set -euo pipefail
 
 packages=(
@@ -10,6 +13,9 @@ packages=(
   default-jdk-headless libjchart2d-java
   clang libclang-rt-14-dev
 )
+if [ "${1:-}" = "--tests" ]; then
+  packages+=(libtf2-dev libgeometry-msgs-dev)
+fi
 
 missing=()
 for package in "${packages[@]}"; do

@@ -4,7 +4,7 @@
 # an ASan+UBSan build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
+scripts/install-deps.sh --tests
 
 jobs=${LCMTF_JOBS:-2}
 cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release

@@ -261,6 +261,40 @@ TEST_F(LoopClosedLater, BeyondTheOpenEdgeTheMissingDataIsTheError) {
               HasSubstr("edge 'c' -> 'a'"));
 }
 
+// A loop that only the older sample of a re-parented edge closes: b hangs from a at 1 s and
+// from z at 3 s, a from b at 1 s and 3 s; s and u are fixed to a. Between 1 s and 3 s b keeps
+// its older parent, a, so a and b are each other's parent; from 3 s on there is no loop.
+class LoopClosedByAnOlderSample : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    put(buffer_, "b", "a", at(1), pose({1, 0, 0}, 0, kZ));
+    put(buffer_, "b", "a", at(3), pose({1, 0, 0}, 0, kZ));
+    put(buffer_, "a", "b", at(1), pose({0, 1, 0}, 0, kZ));
+    put(buffer_, "z", "b", at(3), pose({0, 0, 1}, 0, kZ));
+    putStatic(buffer_, "a", "s", pose({0, 0, 5}, 0, kZ));
+    putStatic(buffer_, "a", "u", pose({0, 6, 0}, 0, kZ));
+  }
+  BufferCore buffer_;
+};
+
+TEST_F(LoopClosedByAnOlderSample, LookupWhileTheLoopExistsRaisesLookupException) {
+  EXPECT_THAT(messageOf<LookupException>([&] { buffer_.lookupTransform("s", "u", at(2)); }),
+              AllOf(HasSubstr("loop"),
+                    AnyOf(HasSubstr("'a' -> 'b' -> 'a'"), HasSubstr("'b' -> 'a' -> 'b'"))));
+  EXPECT_FALSE(buffer_.canTransform("s", "u", at(2)));
+  EXPECT_THROW(buffer_.lookupTransform("s", at(3), "u", at(2), "z"), LookupException);
+  EXPECT_NO_THROW(buffer_.lookupTransform("s", at(3), "u", at(2), "a"));
+}
+
+TEST_F(LoopClosedByAnOlderSample, OnceTheLoopIsGoneTheSameLookupAnswers) {
+  EXPECT_LE(
+      (buffer_.lookupTransform("s", "u", at(3)).transform.translation - Eigen::Vector3d(0, 6, -5))
+          .norm(),
+      1e-12);
+  EXPECT_EQ(buffer_.lookupTransform("s", "u", kLatestTime).stamp, TimePoint{});
+  EXPECT_TRUE(buffer_.canTransform("s", "u", at(3)));
+}
+
 TEST_F(BufferCoreErrors, EmptyFrameNamesRaiseInvalidArgumentException) {
   const auto invalid = [](const std::function<void()>& call) {
     return messageOf<InvalidArgumentException>(call);

@@ -459,6 +459,41 @@ TEST(BufferCoreLookup, LatestCommonTimeIgnoresEdgesAboveTheCommonAncestor) {
   EXPECT_EQ(buffer.getLatestCommonTime("world", "left"), at(7));
 }
 
+// x hangs from c until 3 s, then from a; c from b (data at 2 s only), b from a (at 4 s only).
+// In the tree as of the newest samples x and c meet at a, where x's and c's newest samples
+// last overlap at 2 s; at 2 s x hangs from c, so b's edge, which has no data then, is not on
+// the way. tf answers 2 s with x's older sample.
+class LatestTimeAcrossAParentChange : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    put(buffer_, "c", "x", at(1), pose({1, 0, 0}, 0, kZ));
+    put(buffer_, "a", "x", at(3), pose({0, 3, 0}, 0, kZ));
+    put(buffer_, "b", "c", at(2), pose({0, 0, 2}, 0, kZ));
+    put(buffer_, "a", "b", at(4), pose({0, 0, 4}, 0, kZ));
+  }
+  BufferCore buffer_;
+};
+
+TEST_F(LatestTimeAcrossAParentChange, LatestLookupIsMadeInTheTreeAsItWasAtTheLatestCommonTime) {
+  EXPECT_EQ(buffer_.getLatestCommonTime("c", "x"), at(2));
+  const TransformStamped c_T_x = buffer_.lookupTransform("c", "x", kLatestTime);
+  EXPECT_EQ(c_T_x.stamp, at(2));
+  EXPECT_TRUE(identical(c_T_x.transform, pose({1, 0, 0}, 0, kZ)));
+  EXPECT_TRUE(buffer_.canTransform("c", "x", kLatestTime));
+  EXPECT_TRUE(
+      identical(buffer_.lookupTransform("x", "c", kLatestTime).transform, pose({-1, 0, 0}, 0, kZ)));
+}
+
+TEST_F(LatestTimeAcrossAParentChange, TimeTravelWithALatestLegIsMadeInTheTreeOfThatTime) {
+  // c in itself at the latest time is the identity at c's newest stamp.
+  const TransformStamped travelled = buffer_.lookupTransform("c", kLatestTime, "x", at(2), "c");
+  EXPECT_EQ(travelled.stamp, at(2));
+  EXPECT_TRUE(identical(travelled.transform, pose({1, 0, 0}, 0, kZ)));
+  const TransformStamped latest_source = buffer_.lookupTransform("c", at(2), "x", kLatestTime, "c");
+  EXPECT_TRUE(identical(latest_source.transform, pose({1, 0, 0}, 0, kZ)));
+  EXPECT_TRUE(buffer_.canTransform("c", at(2), "x", kLatestTime, "c"));
+}
+
 TEST(BufferCoreLookup, LatestCommonTimeOfAFrameWithItselfIsItsNewestStamp) {
   BufferCore buffer;
   put(buffer, "world", "base", at(1), pose({0, 0, 0}, 0, kZ));

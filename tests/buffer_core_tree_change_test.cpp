@@ -14,6 +14,7 @@
 #include "lcmtf/buffer_core.hpp"
 #include "lcmtf/exceptions.hpp"
 #include "support/buffer_core_helpers.hpp"
+#include "support/test_scale.hpp"
 
 namespace lcmtf {
 namespace {
@@ -23,10 +24,36 @@ using lcmtf_test::near;
 
 constexpr double kTolerance = 1e-9;
 
+// The two stamps every dynamic edge has a sample at, and the times lookups are asked at.
+constexpr double kOlder = 1.0;
+constexpr double kNewer = 2.0;
+constexpr double kBetween = 1.375;
+constexpr double kRatio = (kBetween - kOlder) / (kNewer - kOlder);
+
+// An edge as the test stored it: a static value, or two samples of a dynamic edge, each with
+// its own value and possibly its own parent.
 struct ModelEdge {
-  std::string parent;
-  Eigen::Isometry3d parent_T_child;
+  std::string older_parent;
+  std::string parent;  // the static edge's, or the newer sample's
+  Eigen::Isometry3d older_value;
+  Eigen::Isometry3d value;
   bool is_static = false;
+
+  std::string parentAt(double time) const {
+    return is_static || time >= kNewer ? parent : older_parent;
+  }
+  // Between two samples of one parent the translation is interpolated linearly and the
+  // rotation along the shorter arc; between different parents the older sample holds.
+  Eigen::Isometry3d valueAt(double time) const {
+    if (is_static || time >= kNewer) return value;
+    if (time <= kOlder || older_parent != parent) return older_value;
+    const Eigen::Quaterniond older(older_value.linear());
+    const Eigen::Quaterniond newer(value.linear());
+    Eigen::Isometry3d mixed = Eigen::Isometry3d::Identity();
+    mixed.linear() = older.slerp(kRatio, newer).toRotationMatrix();
+    mixed.translation() = (1 - kRatio) * older_value.translation() + kRatio * value.translation();
+    return mixed;
+  }
 };
 
 struct Answer {
@@ -34,8 +61,7 @@ struct Answer {
   bool any_dynamic = false;
 };
 
-// The tree as the test built it. Dynamic edges hold one value at two stamps, so that a lookup
-// at any time between them has a single right answer.
+// The tree as the test built it, at the two times lookups are asked at.
 class TreeModel {
  public:
   std::map<std::string, ModelEdge> edges;  // by child
@@ -43,21 +69,26 @@ class TreeModel {
   std::string describe() const {
     std::string text;
     for (const auto& [child, edge] : edges) {
-      text += " " + child + (edge.is_static ? " -static-> " : " -> ") + edge.parent + ";";
+      text += " " + child + (edge.is_static ? " -static-> " : " -> ") + edge.parent;
+      if (!edge.is_static && edge.older_parent != edge.parent) {
+        text += " (before " + std::to_string(kNewer) + ": -> " + edge.older_parent + ")";
+      }
+      text += ";";
     }
     return text;
   }
 
-  // target_T_source, or nothing when the frames are not connected or a loop is climbed before
-  // they meet. As in tf, the source climbs first and stops at the target if it reaches it, and
-  // a frame in itself is the identity.
-  std::optional<Answer> lookup(const std::string& target, const std::string& source) const {
+  // target_T_source at `time`, or nothing when the frames are not connected or a loop is
+  // climbed before they meet. As in tf, the source climbs first and stops at the target if it
+  // reaches it, and a frame in itself is the identity.
+  std::optional<Answer> lookup(const std::string& target, const std::string& source,
+                               double time) const {
     if (target == source) return Answer{Eigen::Isometry3d::Identity(), false};
-    const auto up_from_source = climb(source, target);
+    const auto up_from_source = climb(source, target, time);
     if (!up_from_source) return std::nullopt;
     const Step& top = up_from_source->back();
     if (top.frame == target) return Answer{top.frame_T_start, top.any_dynamic};
-    const auto up_from_target = climb(target, target);
+    const auto up_from_target = climb(target, target, time);
     if (!up_from_target) return std::nullopt;
     for (const Step& from_target : *up_from_target) {
       for (const Step& from_source : *up_from_source) {
@@ -76,7 +107,8 @@ class TreeModel {
     bool any_dynamic;
   };
 
-  std::optional<std::vector<Step>> climb(const std::string& start, const std::string& stop) const {
+  std::optional<std::vector<Step>> climb(const std::string& start, const std::string& stop,
+                                         double time) const {
     std::vector<Step> steps{{start, Eigen::Isometry3d::Identity(), false}};
     for (;;) {
       if (steps.size() > 1 && steps.back().frame == stop) return steps;
@@ -84,7 +116,8 @@ class TreeModel {
       if (edge == edges.end()) return steps;
       if (steps.size() > edges.size()) return std::nullopt;
       const Step& below = steps.back();
-      steps.push_back({edge->second.parent, edge->second.parent_T_child * below.frame_T_start,
+      steps.push_back({edge->second.parentAt(time),
+                       edge->second.valueAt(time) * below.frame_T_start,
                        below.any_dynamic || !edge->second.is_static});
     }
   }
@@ -92,10 +125,6 @@ class TreeModel {
 
 class TreeChanges : public ::testing::Test {
  protected:
-  static constexpr double kOlder = 1.0;
-  static constexpr double kNewer = 2.0;
-  static constexpr double kBetween = 1.375;
-
   BufferCore buffer;
   TreeModel model;
   std::mt19937_64 random{7};
@@ -110,16 +139,23 @@ class TreeChanges : public ::testing::Test {
                                 axis);
   }
 
-  void setEdge(const std::string& parent, const std::string& child, bool is_static) {
-    const Eigen::Isometry3d value = randomPose();
-    const Transform transform(value.translation(), Eigen::Quaterniond(value.linear()));
+  static Transform transformOf(const Eigen::Isometry3d& value) {
+    return Transform(value.translation(), Eigen::Quaterniond(value.linear()));
+  }
+
+  // A static edge, or a dynamic one with a sample of its own value at each stamp, the older
+  // one under `older_parent` when given.
+  void setEdge(const std::string& parent, const std::string& child, bool is_static,
+               const std::string& older_parent = "") {
+    ModelEdge edge{older_parent.empty() ? parent : older_parent, parent, randomPose(), randomPose(),
+                   is_static};
     if (is_static) {
-      lcmtf_test::putStatic(buffer, parent, child, transform);
+      lcmtf_test::putStatic(buffer, parent, child, transformOf(edge.value));
     } else {
-      lcmtf_test::put(buffer, parent, child, at(kOlder), transform);
-      lcmtf_test::put(buffer, parent, child, at(kNewer), transform);
+      lcmtf_test::put(buffer, edge.older_parent, child, at(kOlder), transformOf(edge.older_value));
+      lcmtf_test::put(buffer, parent, child, at(kNewer), transformOf(edge.value));
     }
-    model.edges[child] = ModelEdge{parent, value, is_static};
+    model.edges[child] = edge;
   }
 
   void clear() {
@@ -136,30 +172,38 @@ class TreeChanges : public ::testing::Test {
         if (target == source || !buffer.frameExists(target) || !buffer.frameExists(source)) {
           continue;
         }
-        const std::optional<Answer> expected = model.lookup(target, source);
         const std::string what =
             after + ": " + source + " in " + target + ", in the tree" + model.describe();
-        EXPECT_EQ(buffer.canTransform(target, source, at(kBetween)), expected.has_value()) << what;
-        if (!expected) {
-          EXPECT_THROW(buffer.lookupTransform(target, source, at(kBetween)), TransformException)
+        expectLookupMatches(target, source, at(kBetween), model.lookup(target, source, kBetween),
+                            what + ", between the samples");
+        // The latest common time is found in the tree as of the newest samples, which every
+        // dynamic edge has at kNewer: it is kNewer, or no time when only static edges are met.
+        std::optional<Answer> latest = model.lookup(target, source, kNewer);
+        expectLookupMatches(target, source, kLatestTime, latest, what + ", at the latest");
+        if (latest) {
+          EXPECT_EQ(buffer.lookupTransform(target, source, kLatestTime).stamp,
+                    latest->any_dynamic ? at(kNewer) : kLatestTime)
               << what;
-          EXPECT_THROW(buffer.lookupTransform(target, source, kLatestTime), TransformException)
-              << what;
-          continue;
         }
-        EXPECT_TRUE(near(buffer.lookupTransform(target, source, at(kBetween)).transform,
-                         expected->value, kTolerance))
-            << what;
-        const TransformStamped latest = buffer.lookupTransform(target, source, kLatestTime);
-        EXPECT_TRUE(near(latest.transform, expected->value, kTolerance)) << what;
-        EXPECT_EQ(latest.stamp, expected->any_dynamic ? at(kNewer) : kLatestTime) << what;
       }
     }
     expectTimeTravelMatchesTheModel(after);
   }
 
+  void expectLookupMatches(const std::string& target, const std::string& source, TimePoint time,
+                           const std::optional<Answer>& expected, const std::string& what) {
+    EXPECT_EQ(buffer.canTransform(target, source, time), expected.has_value()) << what;
+    if (!expected) {
+      EXPECT_THROW(buffer.lookupTransform(target, source, time), TransformException) << what;
+      return;
+    }
+    EXPECT_TRUE(
+        near(buffer.lookupTransform(target, source, time).transform, expected->value, kTolerance))
+        << what;
+  }
+
   // Every ordered pair through a third of the frames as the fixed frame (another third after
-  // each change), the two halves at different times.
+  // each change), the source at a time between the samples and the target at the newer one.
   void expectTimeTravelMatchesTheModel(const std::string& after) {
     ++time_travel_checks;
     for (const std::string& target : names) {
@@ -170,8 +214,8 @@ class TreeChanges : public ::testing::Test {
               !buffer.frameExists(fixed)) {
             continue;
           }
-          const std::optional<Answer> fixed_T_source = model.lookup(fixed, source);
-          const std::optional<Answer> target_T_fixed = model.lookup(target, fixed);
+          const std::optional<Answer> fixed_T_source = model.lookup(fixed, source, kBetween);
+          const std::optional<Answer> target_T_fixed = model.lookup(target, fixed, kNewer);
           const std::string what = after + ": " + source + " in " + target + " through " + fixed +
                                    ", in the tree" + model.describe();
           if (!fixed_T_source || !target_T_fixed) {
@@ -262,22 +306,46 @@ TEST_F(TreeChanges, TreeGrownEdgeByEdgeInAnyOrderIsLookedUpRight) {
     edges.emplace_back(names[static_cast<std::size_t>(parent)], names.back());
   }
   std::shuffle(edges.begin(), edges.end(), random);
+  // Checking every pair after each edge costs 40² lookups; the slower builds check less often.
+  const std::size_t check_every = 4 * lcmtf_test::kWorkDivisor;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     setEdge(edges[i].first, edges[i].second, i % 3 == 0);
-    if (i % 4 == 3 || i + 1 == edges.size()) {
+    if (i % check_every == check_every - 1 || i + 1 == edges.size()) {
       expectLookupsMatchTheModel("after edge " + std::to_string(i));
     }
     if (HasFailure()) break;
   }
 }
 
+TEST_F(TreeChanges, EdgeReparentedWithinItsHistoryIsFollowedAtEachTime) {
+  setEdge("map", "odom", true);
+  setEdge("odom", "base", false);
+  setEdge("base", "hand", false);
+  setEdge("hand", "cup", false, "map");
+  expectLookupsMatchTheModel("cup picked up between the samples");
+  setEdge("base", "camera", true);
+  setEdge("map", "cup", false, "camera");
+  expectLookupsMatchTheModel("cup handed from the camera mount to the map");
+}
+
+TEST_F(TreeChanges, LoopOnlyBetweenTheSamplesIsRefusedThereAndNotAtTheLatest) {
+  setEdge("map", "odom", true);
+  setEdge("odom", "base", false, "arm");
+  setEdge("base", "arm", false);
+  setEdge("arm", "hand", true);
+  setEdge("arm", "camera", true);
+  expectLookupsMatchTheModel("base under arm before the newer sample");
+}
+
 TEST_F(TreeChanges, RandomChangesKeepEveryLookupRight) {
   std::uniform_int_distribution<std::size_t> pick(0, names.size() - 1);
   std::uniform_int_distribution<int> change(0, 19);
-  for (int round = 0; round < 400; ++round) {
+  const int rounds = lcmtf_test::scaledCount(400);
+  for (int round = 0; round < rounds; ++round) {
     const int kind = change(random);
     const std::string parent = names[pick(random)];
     const std::string child = names[pick(random)];
+    const std::string older_parent = names[pick(random)];
     std::string after = "round " + std::to_string(round) + ": ";
     if (kind == 0) {
       clear();
@@ -285,6 +353,9 @@ TEST_F(TreeChanges, RandomChangesKeepEveryLookupRight) {
     } else if (kind == 1) {
       buffer.resolveFrame(child);
       after += "resolved " + child;
+    } else if (parent != child && kind % 4 == 3 && older_parent != child) {
+      setEdge(parent, child, false, older_parent);
+      after += older_parent + " then " + parent + " -> " + child + " dynamic";
     } else if (parent != child) {
       const bool is_static = kind % 2 == 0;
       setEdge(parent, child, is_static);

@@ -158,6 +158,7 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
       usual_parent != kNoFrame && nameOf(usual_parent) == parent ? usual_parent : addFrame(parent);
   FrameRecord& record = frames_[child_id];
   const bool was_static = record.cache.isStatic();
+  const bool changed_parent = record.cache.changesParent();
   if (is_static) {
     const bool unchanged =
         was_static && record.cache.staticValue().parent == parent_id &&
@@ -182,6 +183,8 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
     if (was_static) updateStaticChains();
     if (was_static || record.cache.newestParent() != parent_before) noteShapeChange(child_id);
   }
+  if (record.cache.changesParent() && !changed_parent) ++parent_changing_edges_;
+  if (!record.cache.changesParent() && changed_parent) --parent_changing_edges_;
   const std::uint32_t authority_id = authorityId(authority);
   if (record.authority != 0 && record.authority != authority_id) {
     ++record.authority_conflicts;
@@ -559,6 +562,7 @@ std::vector<std::string> BufferCore::getFrameChain(const std::string& target,
 void BufferCore::clear() {
   ExclusiveLock lock(impl_->lock_);
   for (FrameRecord& frame : impl_->frames_) frame.cache.clearHistory();
+  impl_->parent_changing_edges_ = 0;
   impl_->root_paths_stale_ = true;
   impl_->refreshRootPaths();
 }

@@ -38,7 +38,6 @@ struct PathEdge {
   FrameId parent = kNoFrame;
   detail::SampleStatus status = detail::SampleStatus::kOk;
   const Transform* fixed = nullptr;  // the value of a static edge
-  detail::SampleSpan span;           // the samples of a dynamic edge
   bool isDynamic() const { return fixed == nullptr; }
 };
 
@@ -82,10 +81,18 @@ class BufferCore::Impl {
 
   /// target_T_source at `stamp` (0: the latest common time, written back) into `value` when
   /// given, or why not.
+  /// Tries quickLookup(), then lookupByWalk(): two ways of planning the same path, sampled
+  /// and composed alike.
   LookupFailure lookup(FrameId target, FrameId source, std::int64_t& stamp, Transform* value) const;
-  /// lookup() without trying quickLookup() first, for callers that have tried it.
+  /// lookup() by the walk alone, for callers that have tried quickLookup(). At time 0 it finds
+  /// the latest common time in the tree as of each edge's newest sample, then walks the tree
+  /// as it was at that time, as tf does.
   LookupFailure lookupByWalk(FrameId target, FrameId source, std::int64_t& stamp,
                              Transform* value) const;
+  /// Aborts with both answers unless lookupByWalk() at `requested` gives `answered` and, when
+  /// given, the `quick` value: every quick answer is checked so in the sanitizer builds.
+  void crossCheck(FrameId target, FrameId source, std::int64_t requested, std::int64_t answered,
+                  const Transform* quick) const;
   /// lookup() between two handles; throws when either is foreign or the lookup fails.
   void lookupHandles(FrameHandle target, FrameHandle source, std::int64_t& stamp,
                      Transform& value) const;
@@ -95,9 +102,9 @@ class BufferCore::Impl {
     return TransformStamped{fromUtime(stamp), std::string(nameOf(target)),
                             std::string(nameOf(source)), value};
   }
-  /// lookup() by the root paths, for the usual case. False when that cannot answer: a frame
-  /// without a path, an edge whose history changes parent, or any failure; then the walk
-  /// must, and `stamp` is left as it was.
+  /// lookup() by the root paths, for the usual case. False when that cannot answer, or may
+  /// not answer as the walk would: a frame without a path, an edge on the way whose history
+  /// changes parent, or any failure; then the walk must, and `stamp` is left as it was.
   bool quickLookup(FrameId target, FrameId source, std::int64_t& stamp, Transform* value) const;
   /// The time-travel lookup by the root paths: `source` at `source_stamp` into `fixed`, then
   /// `fixed` at `target_stamp` into `target`, sampled and interpolated together. False, with
@@ -106,6 +113,8 @@ class BufferCore::Impl {
   bool quickTimeTravel(FrameId target, std::int64_t& target_stamp, FrameId source,
                        std::int64_t& source_stamp, FrameId fixed, Transform& value) const;
   LookupFailure latestCommonTime(FrameId target, FrameId source, std::int64_t& stamp) const;
+  /// latestCommonTime() of two different frames by the walk alone.
+  LookupFailure latestCommonTimeByWalk(FrameId target, FrameId source, std::int64_t& stamp) const;
   /// The edges from each frame up to their common ancestor at `stamp` (0: the tree as of each
   /// edge's newest sample), one by one as tf walks them, each with data at `stamp`. Lookups
   /// the root paths cannot answer take this way, which holds in any tree, loops and changing
@@ -178,6 +187,9 @@ class BufferCore::Impl {
   detail::FrameNameIndex ids_;
   RootPaths root_paths_;
   bool root_paths_stale_ = false;
+  // How many dynamic edges hold samples with more than one parent: while there are none, the
+  // tree is the same at every time, above the point where two paths meet as well.
+  std::size_t parent_changing_edges_ = 0;
   std::vector<std::string> authorities_;
   std::unordered_map<std::string, std::uint32_t> authority_ids_;
   std::uint32_t last_authority_ = 0;

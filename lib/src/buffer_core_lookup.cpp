@@ -1,9 +1,11 @@
 // Walking the frame tree: from both frames up to their common ancestor, then composing.
 #include <algorithm>
 
-#include "batch_interpolation.hpp"
+#include <cstdio>
+#include <cstdlib>
+
 #include "buffer_core_impl.hpp"
-#include "path_product.hpp"
+#include "path_plan.hpp"
 
 namespace lcmtf {
 
@@ -18,8 +20,9 @@ struct WalkScratch {
   std::uint64_t epoch = 0;
   std::vector<PathEdge> source_edges;
   std::vector<PathEdge> target_edges;
-  std::vector<Transform> interpolated;
+  std::vector<detail::PlanStep> steps;
   std::vector<detail::InterpolationTask> tasks;
+  std::vector<detail::TransformRoom> rooms;
   std::vector<const Transform*> values;
 };
 __attribute__((tls_model("initial-exec"))) thread_local WalkScratch scratch;
@@ -60,35 +63,28 @@ void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t 
   }
 }
 
-// The path's value from each edge's: the dynamic edges between two samples are interpolated
-// together, then all are composed.
-Transform pathValue(WalkScratch& s) {
-  std::size_t between = 0;
+// The value of the path the walk found at `stamp`, by the same sampler and product as the
+// quick lookups.
+Transform pathValue(const std::vector<FrameRecord>& frames, WalkScratch& s, std::int64_t stamp) {
+  const std::size_t count = s.source_edges.size() + s.target_edges.size();
+  s.steps.clear();
   for (const auto* edges : {&s.source_edges, &s.target_edges}) {
-    for (const PathEdge& edge : *edges) between += edge.isDynamic() && edge.span.newer ? 1 : 0;
-  }
-  if (s.interpolated.size() < between) s.interpolated.resize(between);
-  s.tasks.clear();
-  s.values.clear();
-  for (auto* edges : {&s.source_edges, &s.target_edges}) {
-    for (PathEdge& edge : *edges) {
-      if (!edge.isDynamic()) {
-        s.values.push_back(edge.fixed);
-      } else if (!edge.span.newer) {
-        s.values.push_back(edge.span.older);
-      } else {
-        Transform* out = &s.interpolated[s.tasks.size()];
-        s.tasks.push_back(
-            {edge.span.older, edge.span.newer, edge.span.ratio, out, edge.span.arc_squared});
-        s.values.push_back(out);
-      }
+    for (const PathEdge& edge : *edges) {
+      const detail::TimeCache* cache = edge.isDynamic() ? &frames[edge.child].cache : nullptr;
+      s.steps.push_back({cache, edge.fixed, false, false, detail::TimeCache::kNoHint});
     }
   }
-  detail::interpolateBatch(s.tasks.data(), s.tasks.size());
+  if (s.tasks.size() < count) {
+    s.tasks.resize(count);
+    s.rooms.resize(count);
+    s.values.resize(count);
+  }
+  const detail::PathPlan plan{s.steps.data(), s.source_edges.size(), s.target_edges.size(), stamp};
+  detail::PathSampler sampler(s.tasks.data(), s.rooms.data());
+  sampler.sample(plan, s.values.data());
+  sampler.run();
   Transform target_T_source;
-  detail::pathProduct(s.values.data(), s.source_edges.size(),
-                      s.values.data() + s.source_edges.size(), s.target_edges.size(),
-                      target_T_source);
+  detail::productOf(plan, s.values.data(), target_T_source);
   return target_T_source;
 }
 
@@ -105,27 +101,6 @@ LookupFailure missingData(const std::vector<FrameRecord>& frames, const PathEdge
   failure.oldest = cache.oldestStamp();
   failure.newest = cache.newestStamp();
   return failure;
-}
-
-// The first dynamic edge without data at `stamp` as a failure; fills the spans otherwise,
-// unless `check_only` (the walk at `stamp` has found whether each edge has data there).
-// A span whose parent is not the one the walk used means the tree was different at `stamp`.
-LookupFailure sampleEdges(const std::vector<FrameRecord>& frames, std::vector<PathEdge>& edges,
-                          std::int64_t stamp, bool* parent_changed, bool check_only = false) {
-  for (PathEdge& edge : edges) {
-    if (!edge.isDynamic()) continue;
-    const detail::TimeCache& cache = frames[edge.child].cache;
-    if (edge.status == SampleStatus::kOk && check_only) continue;
-    if (edge.status == SampleStatus::kOk) {
-      edge.status = cache.find(stamp, edge.span);
-    }
-    if (edge.status == SampleStatus::kOk) {
-      if (parent_changed && edge.span.parent != edge.parent) *parent_changed = true;
-      continue;
-    }
-    return missingData(frames, edge, stamp);
-  }
-  return {};
 }
 
 // The newest stamp every dynamic edge of the walk has data at; 0 when all are static.
@@ -251,11 +226,15 @@ LookupFailure BufferCore::Impl::latestCommonTime(FrameId target, FrameId source,
     return {};
   }
   if (quickLookup(target, source, stamp, nullptr)) return {};
-  std::vector<PathEdge> source_edges;
-  std::vector<PathEdge> target_edges;
+  return latestCommonTimeByWalk(target, source, stamp);
+}
+
+LookupFailure BufferCore::Impl::latestCommonTimeByWalk(FrameId target, FrameId source,
+                                                       std::int64_t& stamp) const {
+  WalkScratch& s = scratch;
   FrameId ancestor = kNoFrame;
-  LookupFailure failure = walk(target, source, 0, source_edges, target_edges, &ancestor);
-  if (!failure) stamp = commonNewest(frames_, source_edges, target_edges);
+  const LookupFailure failure = walk(target, source, 0, s.source_edges, s.target_edges, &ancestor);
+  stamp = failure ? 0 : commonNewest(frames_, s.source_edges, s.target_edges);
   return failure;
 }
 
@@ -272,43 +251,55 @@ LookupFailure BufferCore::Impl::lookupByWalk(FrameId target, FrameId source, std
   if (target == source) {
     if (stamp == 0) failure = latestCommonTime(target, source, stamp);
   } else {
+    // As tf does: the latest common time is found in the tree as of each edge's newest sample,
+    // and the lookup then made in the tree as it was at that time.
+    if (stamp == 0) failure = latestCommonTimeByWalk(target, source, stamp);
     FrameId ancestor = kNoFrame;
-    bool parent_changed = false;
-    const bool check_only = value == nullptr && stamp != 0;
-    failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor);
-    if (!failure && check_only) {
-      failure = sampleEdges(frames_, s.source_edges, stamp, nullptr, true);
-      if (!failure) failure = sampleEdges(frames_, s.target_edges, stamp, nullptr, true);
-    } else if (!failure && stamp == 0) {
-      // The tree as of each edge's newest sample gives the latest common time; if an edge had
-      // another parent at that time, walk the tree as it was then.
-      stamp = commonNewest(frames_, s.source_edges, s.target_edges);
-      if (!(failure = sampleEdges(frames_, s.source_edges, stamp, &parent_changed))) {
-        failure = sampleEdges(frames_, s.target_edges, stamp, &parent_changed);
-      }
-      if (!failure && parent_changed && stamp != 0) {
-        failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor);
-        if (!failure) failure = sampleEdges(frames_, s.source_edges, stamp, nullptr);
-        if (!failure) failure = sampleEdges(frames_, s.target_edges, stamp, nullptr);
-      }
-    } else if (!failure) {
-      failure = sampleEdges(frames_, s.source_edges, stamp, nullptr);
-      if (!failure) failure = sampleEdges(frames_, s.target_edges, stamp, nullptr);
-    }
+    if (!failure) failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor);
   }
   if (failure) {
     failure.target = target;
     failure.source = source;
     return failure;
   }
-  if (value) {
-    if (target == source) {
-      *value = Transform::identity();
-    } else {
-      *value = pathValue(s);
-    }
-  }
+  if (value) *value = target == source ? Transform::identity() : pathValue(frames_, s, stamp);
   return {};
+}
+
+namespace {
+
+bool sameValue(const Transform& a, const Transform& b) {
+  const double scale = 1.0 + a.translation.norm();
+  return (a.translation - b.translation).norm() <= 1e-9 * scale &&
+         std::abs(a.rotation.dot(b.rotation)) >= 1.0 - 1e-12;
+}
+
+std::string valueText(const Transform& value) {
+  char text[200];
+  std::snprintf(text, sizeof text, "t [%.17g %.17g %.17g] q [%.17g %.17g %.17g %.17g]",
+                value.translation.x(), value.translation.y(), value.translation.z(),
+                value.rotation.x(), value.rotation.y(), value.rotation.z(), value.rotation.w());
+  return text;
+}
+
+}  // namespace
+
+void BufferCore::Impl::crossCheck(FrameId target, FrameId source, std::int64_t requested,
+                                  std::int64_t answered, const Transform* quick) const {
+  std::int64_t stamp = requested;
+  Transform walked;
+  const LookupFailure failure = lookupByWalk(target, source, stamp, quick ? &walked : nullptr);
+  if (!failure && stamp == answered && (!quick || sameValue(*quick, walked))) return;
+  const std::string walk_answer =
+      failure ? describe(failure, "the walk")
+              : "at " + std::to_string(stamp) + (quick ? ": " + valueText(walked) : std::string());
+  std::fprintf(stderr,
+               "lcmtf: a quick lookup and the walk disagree on %s in %s at %lld:\n"
+               "  quick: at %lld%s%s\n  walk:  %s\n",
+               quoted(source).c_str(), quoted(target).c_str(), static_cast<long long>(requested),
+               static_cast<long long>(answered), quick ? ": " : "",
+               quick ? valueText(*quick).c_str() : "", walk_answer.c_str());
+  std::abort();
 }
 
 LookupFailure BufferCore::Impl::resolve(const std::string& name, const char* role,

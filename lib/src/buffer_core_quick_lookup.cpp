@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <new>
 
-#include "batch_interpolation.hpp"
 #include "buffer_core_impl.hpp"
 #include "compose.hpp"
-#include "path_product.hpp"
+#include "lookup_mode.hpp"
+#include "path_plan.hpp"
 
 namespace lcmtf {
 
@@ -17,19 +17,8 @@ namespace {
 // Longer paths are left to the walk, so that a quick lookup needs no heap.
 constexpr std::size_t kMostSteps = 64;
 
-// A step to take: a static value, or the history of a dynamic edge. Left uninitialized in
-// arrays sized for the longest path; takeSteps() sets every field.
-struct QuickStep {
-  const detail::TimeCache* cache;
-  const Transform* fixed;
-  bool anchored;
-  std::size_t hint;
-};
-
-// Room for a transform, constructed only when used.
-struct TransformRoom {
-  alignas(Transform) unsigned char bytes[sizeof(Transform)];
-};
+using detail::PathPlan;
+using detail::PlanStep;
 
 // Where two paths meet: how many steps of each are taken, and whether each one's last step
 // is anchored. Where each path's last step crosses the static chain the other path crosses
@@ -77,11 +66,11 @@ MeetingPoint meetingPoint(const RootPaths::Path& up_from_source,
 // `stamp` (0: both checked later, and each edge's newest stamp added to `common_newest`).
 // The paths were built with each edge's newest parent.
 bool takeSteps(const RootStep* steps, std::size_t count, bool last_anchored, std::int64_t stamp,
-               bool prefetch, QuickStep* out, CommonNewest& common_newest) {
+               bool prefetch, PlanStep* out, CommonNewest& common_newest) {
   for (std::size_t i = 0; i < count; ++i) {
     const RootStep& step = steps[i];
-    QuickStep& quick = out[i];
-    quick = QuickStep{step.cache, step.fixed, false, detail::TimeCache::kNoHint};
+    PlanStep& quick = out[i];
+    quick = PlanStep{step.cache, step.fixed, false, true, detail::TimeCache::kNoHint};
     if (!step.cache) continue;
     const detail::TimeCache& cache = *step.cache;
     quick.anchored = i + 1 == count ? last_anchored : step.anchored;
@@ -95,20 +84,34 @@ bool takeSteps(const RootStep* steps, std::size_t count, bool last_anchored, std
   return true;
 }
 
-// A path as a quick lookup takes it: the steps up from the source, then those up from the
-// target, and the time to sample them at.
+// A plan as a quick lookup makes it, with room for its steps.
 struct QuickPath {
-  std::size_t source_count;
-  std::size_t target_count;
-  std::int64_t at;
-  QuickStep steps[kMostSteps];
+  PathPlan plan;
+  PlanStep steps[kMostSteps];
 };
 
-// Plans the lookup of `source` in `target` at `stamp` (0: the latest common time, which `at`
-// then gives), starting the loads of the samples when `prefetch`; false when the root paths
-// cannot answer.
+// Whether the tree at `at` may differ from the root paths' above where two paths meet: a
+// dynamic edge there that has changed parent within its history and has data at `at` may then
+// have another parent, which may close a loop or lead elsewhere, and a lookup climbs past the
+// meeting point to the root (as tf's does) unless it reaches the target first.
+bool mayDifferAbove(const RootPaths::Path& path, std::size_t from, std::int64_t at) {
+  for (std::size_t i = from; i < path.size; ++i) {
+    const detail::TimeCache* cache = path.steps[i].cache;
+    if (cache && !cache->hasSingleParent() && cache->oldestStamp() <= at &&
+        at <= cache->newestStamp()) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Plans the lookup of `source` in `target` at `stamp` (0: the latest common time, which the
+// plan's `at` then gives), starting the loads of the samples when `prefetch`; false when the
+// root paths cannot answer. `parent_changes` says whether any edge's history holds more than
+// one parent.
 bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frames, FrameId target,
-              FrameId source, std::int64_t stamp, bool prefetch, QuickPath& path) {
+              FrameId source, std::int64_t stamp, bool prefetch, bool parent_changes,
+              QuickPath& path) {
   RootPaths::Path up_from_source;
   RootPaths::Path up_from_target;
   if (!root_paths.find(frames, source, up_from_source) ||
@@ -119,7 +122,7 @@ bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frame
   const MeetingPoint meeting = meetingPoint(up_from_source, up_from_target, source, target);
   const std::size_t count = meeting.source_count + meeting.target_count;
   if (count > kMostSteps) return false;
-  QuickStep* const steps = path.steps;
+  PlanStep* const steps = path.steps;
   prefetch = prefetch && stamp != 0;
   CommonNewest common_newest;
   if (!takeSteps(up_from_source.steps, meeting.source_count, meeting.source_anchored, stamp,
@@ -128,103 +131,86 @@ bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frame
                  prefetch, steps + meeting.source_count, common_newest)) {
     return false;
   }
-  path.source_count = meeting.source_count;
-  path.target_count = meeting.target_count;
-  path.at = stamp;
-  if (stamp != 0 || !common_newest.any_dynamic) return true;
-  const std::int64_t at = common_newest.stamp;
-  for (std::size_t i = 0; i < count; ++i) {
-    QuickStep& step = steps[i];
-    if (!step.cache) continue;
-    if (at < step.cache->singleParentFrom()) return false;
-    step.hint = step.cache->hintNearNewest(at);
+  std::int64_t at = stamp;
+  if (stamp == 0 && common_newest.any_dynamic) {
+    at = common_newest.stamp;
+    for (std::size_t i = 0; i < count; ++i) {
+      PlanStep& step = steps[i];
+      if (!step.cache) continue;
+      if (at < step.cache->singleParentFrom()) return false;
+      step.hint = step.cache->hintNearNewest(at);
+    }
   }
-  path.at = at;
+  // Where the target is on the source's way up, the climb ends there; else it goes on.
+  if (parent_changes && meeting.target_count > 0 &&
+      mayDifferAbove(up_from_source, meeting.source_count, at)) {
+    return false;
+  }
+  path.plan = PathPlan{steps, meeting.source_count, meeting.target_count, at};
   return true;
 }
 
-// The path's target_T_source from the value of each of its steps.
-void productOf(const QuickPath& path, const Transform* const* values, Transform& target_T_source) {
-  detail::pathProduct(values, path.source_count, values + path.source_count, path.target_count,
-                      target_T_source);
-}
-
-// The values of the steps of one or more paths, with the interpolations they need run in one
-// batch.
+// Interpolation tasks and rooms for the steps of `Paths` quick paths.
 template <std::size_t Paths>
-class PathSampler {
- public:
-  /// Points `values` at the value of each of `path`'s steps, valid once run() has returned.
-  void sample(const QuickPath& path, const Transform** values) {
-    const std::size_t count = path.source_count + path.target_count;
-    std::size_t task_count = count_;
-    for (std::size_t i = 0; i < count; ++i) {
-      const QuickStep& step = path.steps[i];
-      if (!step.cache) {
-        values[i] = step.fixed;
-        continue;
-      }
-      const detail::SampleSpan span = step.cache->spanWithin(path.at, step.hint, step.anchored);
-      if (!span.newer) {
-        values[i] = span.older;
-        continue;
-      }
-      Transform* out = ::new (static_cast<void*>(rooms_[task_count].bytes)) Transform;
-      tasks_[task_count++] = {span.older, span.newer, span.ratio, out, span.arc_squared};
-      values[i] = out;
-    }
-    count_ = task_count;
-  }
-  void run() const { detail::interpolateBatch(tasks_, count_); }
-
- private:
-  detail::InterpolationTask tasks_[Paths * kMostSteps];
-  TransformRoom rooms_[Paths * kMostSteps];
-  std::size_t count_ = 0;
+struct QuickSamplerRoom {
+  detail::InterpolationTask tasks[Paths * kMostSteps];
+  detail::TransformRoom rooms[Paths * kMostSteps];
 };
 
 }  // namespace
 
 bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t& stamp,
                                    Transform* value) const {
+  if (!detail::quickLookupsEnabled()) return false;
   QuickPath path;
-  if (!planPath(root_paths_, frames_, target, source, stamp, value != nullptr, path)) {
+  if (!planPath(root_paths_, frames_, target, source, stamp, value != nullptr,
+                parent_changing_edges_ != 0, path)) {
     return false;
   }
   if (value) {
-    PathSampler<1> sampler;
+    QuickSamplerRoom<1> room;
+    detail::PathSampler sampler(room.tasks, room.rooms);
     const Transform* values[kMostSteps];
-    sampler.sample(path, values);
+    sampler.sample(path.plan, values);
     sampler.run();
-    productOf(path, values, *value);
+    detail::productOf(path.plan, values, *value);
   }
-  stamp = path.at;
+  if (detail::kCrossCheckQuickLookups) crossCheck(target, source, stamp, path.plan.at, value);
+  stamp = path.plan.at;
   return true;
 }
 
 bool BufferCore::Impl::quickTimeTravel(FrameId target, std::int64_t& target_stamp, FrameId source,
                                        std::int64_t& source_stamp, FrameId fixed,
                                        Transform& value) const {
-  if (source == fixed || target == fixed) return false;
+  if (!detail::quickLookupsEnabled() || source == fixed || target == fixed) return false;
   QuickPath source_path;
   QuickPath target_path;
-  if (!planPath(root_paths_, frames_, fixed, source, source_stamp, true, source_path) ||
-      !planPath(root_paths_, frames_, target, fixed, target_stamp, true, target_path)) {
+  const bool parent_changes = parent_changing_edges_ != 0;
+  if (!planPath(root_paths_, frames_, fixed, source, source_stamp, true, parent_changes,
+                source_path) ||
+      !planPath(root_paths_, frames_, target, fixed, target_stamp, true, parent_changes,
+                target_path)) {
     return false;
   }
-  PathSampler<2> sampler;
+  QuickSamplerRoom<2> room;
+  detail::PathSampler sampler(room.tasks, room.rooms);
   const Transform* source_values[kMostSteps];
   const Transform* target_values[kMostSteps];
-  sampler.sample(source_path, source_values);
-  sampler.sample(target_path, target_values);
+  sampler.sample(source_path.plan, source_values);
+  sampler.sample(target_path.plan, target_values);
   sampler.run();
   Transform fixed_T_source;
   Transform target_T_fixed;
-  productOf(source_path, source_values, fixed_T_source);
-  productOf(target_path, target_values, target_T_fixed);
+  detail::productOf(source_path.plan, source_values, fixed_T_source);
+  detail::productOf(target_path.plan, target_values, target_T_fixed);
+  if (detail::kCrossCheckQuickLookups) {
+    crossCheck(fixed, source, source_stamp, source_path.plan.at, &fixed_T_source);
+    crossCheck(target, fixed, target_stamp, target_path.plan.at, &target_T_fixed);
+  }
   value = detail::composed(target_T_fixed, fixed_T_source);
-  source_stamp = source_path.at;
-  target_stamp = target_path.at;
+  source_stamp = source_path.plan.at;
+  target_stamp = target_path.plan.at;
   return true;
 }
 

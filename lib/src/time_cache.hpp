@@ -74,6 +74,8 @@ class TimeCache {
   void reanchor(AnchorOf anchorOf);
   /// Whether every sample kept has the same parent.
   bool hasSingleParent() const { return parent_changed_at_ <= oldest_stamp_; }
+  /// Whether the edge is dynamic and its samples have more than one parent.
+  bool changesParent() const { return !is_static_ && count_ > 0 && !hasSingleParent(); }
   /// Whether insert() would refuse a sample at `stamp` as older than the history kept.
   bool isTooOld(std::int64_t stamp, std::int64_t cache_time) const {
     return !is_static_ && count_ > 0 && stamp < saturatingSubtract(newest_stamp_, cache_time);

@@ -1,0 +1,87 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <new>
+
+#include "batch_interpolation.hpp"
+#include "path_product.hpp"
+#include "time_cache.hpp"
+
+namespace lcmtf::detail {
+
+/// A step of a planned path: a static value, or a dynamic edge's history to sample. Left
+/// uninitialized in arrays sized for the longest path; planners set every field.
+struct PlanStep {
+  const TimeCache* cache;  // null for a static step
+  const Transform* fixed;  // a static step's value
+  bool anchored;           // sample the edge's anchored values (see TimeCache::reanchor)
+  bool single_parent;      // every sample the time may fall between has the edge's newest parent
+  std::size_t hint;        // where the samples likely are (TimeCache::prefetch), or kNoHint
+};
+
+/// A lookup's path, whichever way it was found (the root paths or the walk): the steps up from
+/// the source to where the two frames' ways meet, then those up from the target, and the time
+/// at which the dynamic steps are sampled. Every dynamic step has data at `at`.
+struct PathPlan {
+  const PlanStep* steps = nullptr;
+  std::size_t source_count = 0;
+  std::size_t target_count = 0;
+  std::int64_t at = 0;
+
+  std::size_t size() const { return source_count + target_count; }
+};
+
+/// Room for a transform, constructed only when used.
+struct TransformRoom {
+  alignas(Transform) unsigned char bytes[sizeof(Transform)];
+};
+
+/// The values of the steps of one or more plans, with the interpolations they need run in one
+/// batch, in storage the caller gives: a task and a room for every step sampled.
+class PathSampler {
+ public:
+  PathSampler(InterpolationTask* tasks, TransformRoom* rooms) : tasks_(tasks), rooms_(rooms) {}
+
+  /// Points `values` at the value of each of `plan`'s steps, valid once run() has returned.
+  void sample(const PathPlan& plan, const Transform** values) {
+    const std::size_t count = plan.size();
+    std::size_t task_count = count_;
+    for (std::size_t i = 0; i < count; ++i) {
+      const PlanStep& step = plan.steps[i];
+      if (!step.cache) {
+        values[i] = step.fixed;
+        continue;
+      }
+      SampleSpan span;
+      if (step.single_parent) {
+        span = step.cache->spanWithin(plan.at, step.hint, step.anchored);
+      } else {
+        step.cache->find(plan.at, span);
+      }
+      if (!span.newer) {
+        values[i] = span.older;
+        continue;
+      }
+      Transform* out = ::new (static_cast<void*>(rooms_[task_count].bytes)) Transform;
+      tasks_[task_count++] = {span.older, span.newer, span.ratio, out, span.arc_squared};
+      values[i] = out;
+    }
+    count_ = task_count;
+  }
+  void run() const { interpolateBatch(tasks_, count_); }
+
+ private:
+  InterpolationTask* tasks_;
+  TransformRoom* rooms_;
+  std::size_t count_ = 0;
+};
+
+/// The plan's target_T_source from the value of each of its steps (sampled by PathSampler).
+inline void productOf(const PathPlan& plan, const Transform* const* values,
+                      Transform& target_T_source) {
+  pathProduct(values, plan.source_count, values + plan.source_count, plan.target_count,
+              target_T_source);
+}
+
+}  // namespace lcmtf::detail
