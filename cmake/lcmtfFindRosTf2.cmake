@@ -1,6 +1,6 @@
 # Finds ROS tf2's BufferCore (Debian: libtf2-dev), which ships no CMake package usable outside
 # catkin, and defines the imported target lcmtf_ros_tf2 when every part is present. Only the
-# benchmark's comparison and the agreement test use it; nothing requires it.
+# benchmark's comparison and the agreement tests use it; nothing requires it.
 if(TARGET lcmtf_ros_tf2)
   return()
 endif()
