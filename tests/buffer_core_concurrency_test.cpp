@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "lcmtf/buffer_core.hpp"
+#include "support/test_scale.hpp"
 
 namespace lcmtf {
 namespace {
@@ -27,14 +28,14 @@ TransformStamped moving(const std::string& parent, const std::string& child, std
 TEST(BufferCoreConcurrency, ReadersWritersClearAndRequestsRunTogether) {
   BufferCore buffer(std::chrono::milliseconds(200));
   buffer.setErrorReporter(nullptr);
-  buffer.setTransform(
-      TransformStamped{TimePoint{}, "map", "odom", Transform(Eigen::Vector3d(1, 0, 0), {1, 0, 0, 0})},
-      "static", true);
+  buffer.setTransform(TransformStamped{TimePoint{}, "map", "odom",
+                                       Transform(Eigen::Vector3d(1, 0, 0), {1, 0, 0, 0})},
+                      "static", true);
   buffer.setTransform(TransformStamped{TimePoint{}, "base", "camera",
                                        Transform(Eigen::Vector3d(0, 0, 1), {1, 0, 0, 0})},
                       "static", true);
 
-  constexpr int kSamplesPerWriter = 4000;
+  const int samples_per_writer = lcmtf_test::scaledCount(4000);
   std::atomic<std::int64_t> newest{kStepMicros};
   std::atomic<bool> writing{true};
   std::atomic<std::uint64_t> answered{0};
@@ -45,8 +46,8 @@ TEST(BufferCoreConcurrency, ReadersWritersClearAndRequestsRunTogether) {
   const std::vector<std::pair<std::string, std::string>> writer_edges{{"odom", "base"},
                                                                       {"base", "arm"}};
   for (const auto& [parent, child] : writer_edges) {
-    threads.emplace_back([&buffer, &newest, parent = parent, child = child] {
-      for (int i = 1; i <= kSamplesPerWriter; ++i) {
+    threads.emplace_back([&buffer, &newest, samples_per_writer, parent = parent, child = child] {
+      for (int i = 1; i <= samples_per_writer; ++i) {
         const std::int64_t utime = i * kStepMicros;
         buffer.setTransform(moving(parent, child, utime), "writer_" + child);
         std::int64_t seen = newest.load();
@@ -115,7 +116,7 @@ TEST(BufferCoreConcurrency, ReadersWritersClearAndRequestsRunTogether) {
   writing.store(false);
   for (std::size_t i = 2; i < threads.size(); ++i) threads[i].join();
 
-  const std::int64_t after_all = (kSamplesPerWriter + 1) * kStepMicros;
+  const std::int64_t after_all = (samples_per_writer + 1) * kStepMicros;
   for (const auto& [parent, child] : writer_edges) {
     ASSERT_TRUE(buffer.setTransform(moving(parent, child, after_all), "writer_" + child));
   }
@@ -128,7 +129,6 @@ TEST(BufferCoreConcurrency, ReadersWritersClearAndRequestsRunTogether) {
   for (TransformableRequestHandle handle : fired) {
     EXPECT_EQ(fired.count(handle), 1u) << "request " << handle << " fired twice";
   }
-
 }
 
 }  // namespace
