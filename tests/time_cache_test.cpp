@@ -1,0 +1,433 @@
+#include "time_cache.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <set>
+#include <vector>
+
+namespace lcmtf::detail {
+namespace {
+
+constexpr FrameId kParent = 1;
+constexpr FrameId kOtherParent = 2;
+constexpr std::int64_t kKeepAll = std::int64_t{1} << 40;
+constexpr std::int64_t kCacheTime = 100;
+
+// A value told apart from every other stamp's, and from other versions at the same stamp.
+Transform valueAt(std::int64_t stamp, int version = 0) {
+  const double t = static_cast<double>(stamp);
+  const Eigen::Vector3d axis = Eigen::Vector3d(1.0, 2.0, 3.0).normalized();
+  return Transform(Eigen::Vector3d(t, 0.5 * t + version, -t),
+                   Eigen::Quaterniond(Eigen::AngleAxisd(1e-3 * t + 0.1 * version, axis)));
+}
+
+EdgeSample sampleAt(std::int64_t stamp, FrameId parent = kParent, int version = 0) {
+  return EdgeSample{stamp, parent, valueAt(stamp, version)};
+}
+
+::testing::AssertionResult holds(const Transform* actual, const Transform& expected) {
+  if (actual == nullptr) return ::testing::AssertionFailure() << "no transform";
+  if (actual->translation == expected.translation &&
+      actual->rotation.coeffs() == expected.rotation.coeffs()) {
+    return ::testing::AssertionSuccess();
+  }
+  return ::testing::AssertionFailure() << "holds translation " << actual->translation.transpose()
+                                       << ", expected " << expected.translation.transpose();
+}
+
+::testing::AssertionResult approximately(const Transform* actual, const Transform& expected) {
+  if (actual == nullptr) return ::testing::AssertionFailure() << "no transform";
+  if (actual->isApprox(expected, 1e-9)) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "translation " << actual->translation.transpose()
+                                       << " rotation " << actual->rotation.coeffs().transpose()
+                                       << ", expected " << expected.translation.transpose()
+                                       << " rotation " << expected.rotation.coeffs().transpose();
+}
+
+::testing::AssertionResult sameSpan(const SampleSpan& actual, const SampleSpan& expected) {
+  if (actual.older == expected.older && actual.newer == expected.newer &&
+      actual.ratio == expected.ratio && actual.parent == expected.parent &&
+      (actual.newer == nullptr || actual.arc_squared == expected.arc_squared ||
+       (std::isnan(actual.arc_squared) && std::isnan(expected.arc_squared)))) {
+    return ::testing::AssertionSuccess();
+  }
+  return ::testing::AssertionFailure()
+         << "older " << actual.older << " newer " << actual.newer << " ratio " << actual.ratio
+         << " parent " << actual.parent << ", expected older " << expected.older << " newer "
+         << expected.newer << " ratio " << expected.ratio << " parent " << expected.parent;
+}
+
+void expectExactly(const TimeCache& cache, std::int64_t stamp, const Transform& value,
+                   FrameId parent = kParent) {
+  SampleSpan span;
+  ASSERT_EQ(cache.find(stamp, span), SampleStatus::kOk) << "at " << stamp;
+  EXPECT_TRUE(holds(span.older, value)) << "at " << stamp;
+  EXPECT_EQ(span.newer, nullptr) << "at " << stamp;
+  EXPECT_EQ(span.parent, parent) << "at " << stamp;
+}
+
+void expectBetween(const TimeCache& cache, std::int64_t stamp, std::int64_t older,
+                   std::int64_t newer, FrameId parent = kParent) {
+  SampleSpan span;
+  ASSERT_EQ(cache.find(stamp, span), SampleStatus::kOk) << "at " << stamp;
+  EXPECT_TRUE(holds(span.older, valueAt(older))) << "at " << stamp;
+  EXPECT_TRUE(holds(span.newer, valueAt(newer))) << "at " << stamp;
+  EXPECT_DOUBLE_EQ(span.ratio,
+                   static_cast<double>(stamp - older) / static_cast<double>(newer - older))
+      << "at " << stamp;
+  EXPECT_EQ(span.parent, parent) << "at " << stamp;
+}
+
+FrameId parentAt(const TimeCache& cache, std::int64_t stamp, SampleStatus expected_status) {
+  SampleStatus status = SampleStatus::kEmpty;
+  const FrameId parent = cache.parentAt(stamp, status);
+  EXPECT_EQ(status, expected_status) << "at " << stamp;
+  return parent;
+}
+
+// The gap after a sample: runs of close samples alternating with runs of far apart ones, as
+// no even spacing describes.
+std::int64_t unevenGap(std::size_t index, std::mt19937_64& random) {
+  const bool close = (index / 25) % 2 == 0;
+  std::uniform_int_distribution<std::int64_t> gap(close ? 1 : 40, close ? 4 : 400);
+  return gap(random);
+}
+
+std::vector<std::int64_t> unevenStamps(std::size_t count, std::uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::vector<std::int64_t> stamps{1'000'000};
+  while (stamps.size() < count) stamps.push_back(stamps.back() + unevenGap(stamps.size(), random));
+  return stamps;
+}
+
+// Asks spanWithin() at every stamp from the oldest of `stamps` (those the cache keeps, in order)
+// to the newest, from a correct hint, wrong ones, none, and the cache's own, and expects what
+// find() gives. Returns at how many stamps prefetch() guessed a wrong place.
+std::size_t expectSpanWithinAgreesWithFind(const TimeCache& cache,
+                                           const std::vector<std::int64_t>& stamps) {
+  EXPECT_TRUE(cache.hasSingleParent());
+  EXPECT_EQ(cache.size(), stamps.size());
+  if (stamps.size() < 2) return 0;
+  const std::size_t last_hint = stamps.size() - 2;
+  std::size_t at = 0;  // the newest sample at or before the stamp
+  std::size_t wrong_guesses = 0;
+  for (std::int64_t stamp = stamps.front(); stamp <= stamps.back(); ++stamp) {
+    while (at + 1 < stamps.size() && stamps[at + 1] <= stamp) ++at;
+    SampleSpan expected;
+    if (cache.find(stamp, expected) != SampleStatus::kOk) {
+      ADD_FAILURE() << "no value at " << stamp;
+      return wrong_guesses;
+    }
+    const std::size_t correct = std::min(at, last_hint);
+    const std::size_t guess = cache.prefetch(stamp, false);
+    if (guess != correct) ++wrong_guesses;
+    const std::size_t hints[] = {correct,
+                                 (correct + stamps.size() / 2) % (last_hint + 1),
+                                 0,
+                                 last_hint,
+                                 TimeCache::kNoHint,
+                                 guess,
+                                 cache.hintNearNewest(stamp)};
+    for (const std::size_t hint : hints) {
+      EXPECT_TRUE(sameSpan(cache.spanWithin(stamp, hint, false), expected))
+          << "at " << stamp << " from hint " << hint;
+    }
+  }
+  return wrong_guesses;
+}
+
+TEST(TimeCache, SamplesInsertedInAnyOrderAreFoundInTimeOrder) {
+  const std::vector<std::int64_t> stamps = unevenStamps(300, 3);
+  std::vector<std::int64_t> shuffled = stamps;
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937_64(5));
+  TimeCache cache;
+  for (const std::int64_t stamp : shuffled) {
+    ASSERT_EQ(cache.insert(sampleAt(stamp), kKeepAll), InsertOutcome::kAdded);
+  }
+  ASSERT_EQ(cache.size(), stamps.size());
+  EXPECT_EQ(cache.oldestStamp(), stamps.front());
+  EXPECT_EQ(cache.newestStamp(), stamps.back());
+  for (std::size_t i = 0; i < stamps.size(); ++i) {
+    expectExactly(cache, stamps[i], valueAt(stamps[i]));
+    if (i + 1 == stamps.size() || stamps[i + 1] - stamps[i] < 2) continue;
+    expectBetween(cache, stamps[i] + 1, stamps[i], stamps[i + 1]);
+    expectBetween(cache, stamps[i + 1] - 1, stamps[i], stamps[i + 1]);
+  }
+}
+
+TEST(TimeCache, RepeatedStampReplacesTheSampleThere) {
+  for (const std::int64_t repeated : {100, 200, 300}) {
+    SCOPED_TRACE(repeated);
+    TimeCache cache;
+    for (const std::int64_t stamp : {100, 200, 300}) cache.insert(sampleAt(stamp), kKeepAll);
+    EXPECT_EQ(cache.insert(sampleAt(repeated, kParent, 1), kKeepAll), InsertOutcome::kReplaced);
+    EXPECT_EQ(cache.size(), 3u);
+    for (const std::int64_t stamp : {100, 200, 300}) {
+      expectExactly(cache, stamp, valueAt(stamp, stamp == repeated ? 1 : 0));
+    }
+  }
+}
+
+TEST(TimeCache, SampleAtTheWindowEdgeIsKeptAndOneOlderIsPruned) {
+  TimeCache cache;
+  for (const std::int64_t stamp : {899, 900, 950}) cache.insert(sampleAt(stamp), kCacheTime);
+  ASSERT_EQ(cache.size(), 3u);
+  ASSERT_EQ(cache.insert(sampleAt(1000), kCacheTime), InsertOutcome::kAdded);
+  EXPECT_EQ(cache.size(), 3u);
+  EXPECT_EQ(cache.oldestStamp(), 900);
+  SampleSpan span;
+  EXPECT_EQ(cache.find(899, span), SampleStatus::kPast);
+  expectExactly(cache, 900, valueAt(900));
+}
+
+TEST(TimeCache, SampleAtTheWindowEdgeIsInsertedAndOneOlderIsRefused) {
+  TimeCache cache;
+  cache.insert(sampleAt(950), kCacheTime);
+  cache.insert(sampleAt(1000), kCacheTime);
+  EXPECT_TRUE(cache.isTooOld(899, kCacheTime));
+  EXPECT_FALSE(cache.isTooOld(900, kCacheTime));
+  EXPECT_EQ(cache.insert(sampleAt(899), kCacheTime), InsertOutcome::kTooOld);
+  EXPECT_EQ(cache.size(), 2u);
+  EXPECT_EQ(cache.oldestStamp(), 950);
+  EXPECT_EQ(cache.insert(sampleAt(900), kCacheTime), InsertOutcome::kAdded);
+  EXPECT_EQ(cache.oldestStamp(), 900);
+  EXPECT_EQ(cache.insert(sampleAt(900, kParent, 1), kCacheTime), InsertOutcome::kReplaced);
+  expectExactly(cache, 900, valueAt(900, 1));
+}
+
+TEST(TimeCache, EmptyEdgeHasNoValueAndNoParent) {
+  TimeCache cache;
+  SampleSpan span;
+  EXPECT_EQ(cache.find(0, span), SampleStatus::kEmpty);
+  EXPECT_EQ(parentAt(cache, 0, SampleStatus::kEmpty), kNoFrame);
+  EXPECT_FALSE(cache.changesParent());
+  EXPECT_FALSE(cache.isTooOld(std::numeric_limits<std::int64_t>::min(), kCacheTime));
+}
+
+TEST(TimeCache, StampsOutsideTheHistoryArePastOrFutureWithTheNearestParent) {
+  TimeCache cache;
+  cache.insert(sampleAt(100, kParent), kKeepAll);
+  cache.insert(sampleAt(200, kOtherParent), kKeepAll);
+  SampleSpan span;
+  EXPECT_EQ(cache.find(99, span), SampleStatus::kPast);
+  EXPECT_EQ(cache.find(201, span), SampleStatus::kFuture);
+  EXPECT_EQ(parentAt(cache, 99, SampleStatus::kPast), kParent);
+  EXPECT_EQ(parentAt(cache, 201, SampleStatus::kFuture), kOtherParent);
+  expectExactly(cache, 100, valueAt(100), kParent);
+  expectExactly(cache, 200, valueAt(200), kOtherParent);
+  cache.clearHistory();
+  EXPECT_EQ(cache.find(150, span), SampleStatus::kEmpty);
+}
+
+TEST(TimeCache, ParentChangeKeepsTheOlderSampleAloneUntilTheChange) {
+  TimeCache cache;
+  cache.insert(sampleAt(100, kParent), kKeepAll);
+  cache.insert(sampleAt(200, kParent), kKeepAll);
+  cache.insert(sampleAt(300, kOtherParent), kKeepAll);
+  cache.insert(sampleAt(400, kOtherParent), kKeepAll);
+  expectBetween(cache, 150, 100, 200, kParent);
+  expectExactly(cache, 250, valueAt(200), kParent);
+  expectExactly(cache, 299, valueAt(200), kParent);
+  expectExactly(cache, 300, valueAt(300), kOtherParent);
+  expectBetween(cache, 350, 300, 400, kOtherParent);
+  EXPECT_EQ(parentAt(cache, 250, SampleStatus::kOk), kParent);
+  EXPECT_EQ(parentAt(cache, 299, SampleStatus::kOk), kParent);
+  EXPECT_EQ(parentAt(cache, 300, SampleStatus::kOk), kOtherParent);
+  EXPECT_EQ(parentAt(cache, 350, SampleStatus::kOk), kOtherParent);
+  EXPECT_FALSE(cache.hasSingleParent());
+  EXPECT_TRUE(cache.changesParent());
+  EXPECT_EQ(cache.singleParentFrom(), std::numeric_limits<std::int64_t>::max());
+}
+
+TEST(TimeCache, PruningTheOldParentsLastSampleLeavesOneParent) {
+  TimeCache cache;
+  cache.insert(sampleAt(100, kParent), kCacheTime);
+  cache.insert(sampleAt(150, kOtherParent), kCacheTime);
+  cache.insert(sampleAt(200, kOtherParent), kCacheTime);
+  ASSERT_EQ(cache.oldestStamp(), 100);
+  ASSERT_FALSE(cache.hasSingleParent());
+  cache.insert(sampleAt(201, kOtherParent), kCacheTime);
+  EXPECT_EQ(cache.oldestStamp(), 150);
+  EXPECT_TRUE(cache.hasSingleParent());
+  EXPECT_FALSE(cache.changesParent());
+  EXPECT_EQ(cache.singleParentFrom(), cache.oldestStamp());
+  expectBetween(cache, 175, 150, 200, kOtherParent);
+}
+
+TEST(TimeCache, LateSampleWithAnotherParentAmongOthersMakesTheEdgeChangeParent) {
+  TimeCache cache;
+  for (const std::int64_t stamp : {100, 200, 300}) cache.insert(sampleAt(stamp), kKeepAll);
+  ASSERT_TRUE(cache.hasSingleParent());
+  ASSERT_EQ(cache.singleParentFrom(), 100);
+  EXPECT_EQ(cache.insert(sampleAt(150, kOtherParent), kKeepAll), InsertOutcome::kAdded);
+  EXPECT_FALSE(cache.hasSingleParent());
+  EXPECT_TRUE(cache.changesParent());
+  EXPECT_EQ(cache.singleParentFrom(), std::numeric_limits<std::int64_t>::max());
+  EXPECT_EQ(parentAt(cache, 125, SampleStatus::kOk), kParent);
+  EXPECT_EQ(parentAt(cache, 150, SampleStatus::kOk), kOtherParent);
+  EXPECT_EQ(parentAt(cache, 175, SampleStatus::kOk), kOtherParent);
+  EXPECT_EQ(parentAt(cache, 200, SampleStatus::kOk), kParent);
+  expectExactly(cache, 125, valueAt(100), kParent);
+  expectExactly(cache, 175, valueAt(150), kOtherParent);
+}
+
+TEST(TimeCache, LateSampleWithAnotherParentBeforeTheOldestMakesTheEdgeChangeParent) {
+  TimeCache cache;
+  for (const std::int64_t stamp : {100, 200}) cache.insert(sampleAt(stamp), kKeepAll);
+  cache.insert(sampleAt(50, kOtherParent), kKeepAll);
+  EXPECT_FALSE(cache.hasSingleParent());
+  EXPECT_EQ(cache.singleParentFrom(), std::numeric_limits<std::int64_t>::max());
+  EXPECT_EQ(parentAt(cache, 75, SampleStatus::kOk), kOtherParent);
+  EXPECT_EQ(parentAt(cache, 100, SampleStatus::kOk), kParent);
+}
+
+TEST(TimeCache, LateSampleWithTheSameParentKeepsOneParentFromTheOldest) {
+  TimeCache cache;
+  for (const std::int64_t stamp : {100, 200}) cache.insert(sampleAt(stamp), kKeepAll);
+  cache.insert(sampleAt(50), kKeepAll);
+  cache.insert(sampleAt(150), kKeepAll);
+  EXPECT_TRUE(cache.hasSingleParent());
+  EXPECT_EQ(cache.singleParentFrom(), 50);
+}
+
+TEST(TimeCache, SetStaticDropsTheHistory) {
+  TimeCache cache;
+  cache.insert(sampleAt(100, kParent), kKeepAll);
+  cache.insert(sampleAt(200, kOtherParent), kKeepAll);
+  cache.setStatic(kOtherParent, valueAt(7));
+  EXPECT_TRUE(cache.isStatic());
+  EXPECT_EQ(cache.size(), 1u);
+  EXPECT_FALSE(cache.changesParent());
+  EXPECT_EQ(cache.staticValue().parent, kOtherParent);
+  for (const std::int64_t stamp :
+       {std::numeric_limits<std::int64_t>::min(), std::int64_t{0}, std::int64_t{100},
+        std::int64_t{150}, std::numeric_limits<std::int64_t>::max()}) {
+    expectExactly(cache, stamp, valueAt(7), kOtherParent);
+    EXPECT_EQ(parentAt(cache, stamp, SampleStatus::kOk), kOtherParent);
+    EXPECT_FALSE(cache.isTooOld(stamp, kCacheTime));
+  }
+}
+
+TEST(TimeCache, ClearHistoryKeepsAStaticValue) {
+  TimeCache cache;
+  cache.setStatic(kParent, valueAt(7));
+  cache.clearHistory();
+  EXPECT_TRUE(cache.isStatic());
+  expectExactly(cache, 12345, valueAt(7), kParent);
+}
+
+TEST(TimeCache, ClearHistoryForgetsHowOldTheHistoryWas) {
+  TimeCache cache;
+  cache.insert(sampleAt(100), kCacheTime);
+  cache.insert(sampleAt(1000), kCacheTime);
+  cache.clearHistory();
+  EXPECT_TRUE(cache.empty());
+  EXPECT_EQ(cache.newestParent(), kNoFrame);
+  EXPECT_EQ(cache.insert(sampleAt(10), kCacheTime), InsertOutcome::kAdded);
+  expectExactly(cache, 10, valueAt(10));
+}
+
+TEST(TimeCache, SampleAfterAStaticValueMakesTheEdgeDynamic) {
+  TimeCache cache;
+  cache.setStatic(kParent, valueAt(7));
+  EXPECT_EQ(cache.insert(sampleAt(500, kOtherParent), kCacheTime), InsertOutcome::kAdded);
+  EXPECT_FALSE(cache.isStatic());
+  EXPECT_EQ(cache.size(), 1u);
+  EXPECT_EQ(cache.newestParent(), kOtherParent);
+  expectExactly(cache, 500, valueAt(500), kOtherParent);
+  SampleSpan span;
+  EXPECT_EQ(cache.find(499, span), SampleStatus::kPast);
+}
+
+TEST(TimeCache, SpanWithinAgreesWithFindFromAnyHintOverUnevenSamples) {
+  const std::vector<std::int64_t> stamps = unevenStamps(200, 9);
+  TimeCache cache;
+  for (const std::int64_t stamp : stamps) cache.insert(sampleAt(stamp), kKeepAll);
+  EXPECT_GT(expectSpanWithinAgreesWithFind(cache, stamps), 0u)
+      << "even spacing guessed every sample: the search beyond the guess went untested";
+}
+
+TEST(TimeCache, SpanWithinAgreesWithFindAfterTheRingWrapsAround) {
+  constexpr std::int64_t kWindow = 3000;
+  std::mt19937_64 random(17);
+  TimeCache cache;
+  std::set<std::int64_t> kept;
+  std::int64_t newest = 1'000'000;
+  // The newest sample sits in a slot before the oldest's.
+  const auto wrapped = [&cache] {
+    SampleSpan oldest;
+    SampleSpan newest_span;
+    return cache.find(cache.oldestStamp(), oldest) == SampleStatus::kOk &&
+           cache.find(cache.newestStamp(), newest_span) == SampleStatus::kOk &&
+           newest_span.older < oldest.older;
+  };
+  for (std::size_t i = 0; i < 100'000 && (i < 2000 || !wrapped()); ++i) {
+    if (i % 7 == 3) {
+      std::uniform_int_distribution<std::int64_t> late(newest - kWindow / 2, newest - 1);
+      const std::int64_t stamp = late(random);
+      if (kept.count(stamp)) continue;
+      ASSERT_EQ(cache.insert(sampleAt(stamp), kWindow), InsertOutcome::kAdded);
+      kept.insert(stamp);
+    } else {
+      newest += unevenGap(i, random);
+      ASSERT_EQ(cache.insert(sampleAt(newest), kWindow), InsertOutcome::kAdded);
+      kept.insert(newest);
+      kept.erase(kept.begin(), kept.lower_bound(newest - kWindow));
+    }
+  }
+  ASSERT_TRUE(wrapped());
+  const std::vector<std::int64_t> stamps(kept.begin(), kept.end());
+  ASSERT_EQ(cache.size(), stamps.size());
+  for (const std::int64_t stamp : stamps) expectExactly(cache, stamp, valueAt(stamp));
+  EXPECT_GT(expectSpanWithinAgreesWithFind(cache, stamps), 0u)
+      << "even spacing guessed every sample: the search beyond the guess went untested";
+}
+
+TEST(TimeCache, ReanchoredSpansAreTheAnchorTimesTheSample) {
+  const Transform anchor(Eigen::Vector3d(1.0, -2.0, 3.0),
+                         Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX())));
+  const Transform other_anchor(
+      Eigen::Vector3d(-4.0, 0.5, 0.0),
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ())));
+  TimeCache cache;
+  for (const std::int64_t stamp : {100, 200, 350}) cache.insert(sampleAt(stamp), kKeepAll);
+  for (const Transform* used : {&anchor, &other_anchor}) {
+    cache.reanchor(
+        [used](FrameId parent) -> const Transform* { return parent == kParent ? used : nullptr; });
+    for (const std::int64_t stamp : {100, 200, 350}) {
+      const SampleSpan anchored = cache.spanWithin(stamp, TimeCache::kNoHint, true);
+      EXPECT_TRUE(approximately(anchored.older, *used * valueAt(stamp))) << "at " << stamp;
+      EXPECT_EQ(anchored.newer, nullptr);
+      EXPECT_TRUE(holds(cache.spanWithin(stamp, TimeCache::kNoHint, false).older, valueAt(stamp)));
+    }
+    const SampleSpan between = cache.spanWithin(130, cache.prefetch(130, true), true);
+    EXPECT_TRUE(approximately(between.older, *used * valueAt(100)));
+    EXPECT_TRUE(approximately(between.newer, *used * valueAt(200)));
+    EXPECT_DOUBLE_EQ(between.ratio, 0.3);
+  }
+  cache.reanchor([](FrameId) -> const Transform* { return nullptr; });
+  EXPECT_TRUE(holds(cache.spanWithin(200, TimeCache::kNoHint, true).older, valueAt(200)));
+}
+
+TEST(TimeCache, SampleInsertedWithAnAnchorIsAnchored) {
+  const Transform anchor(Eigen::Vector3d(1.0, -2.0, 3.0),
+                         Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX())));
+  TimeCache cache;
+  cache.insert(sampleAt(100), kKeepAll);
+  cache.insert(sampleAt(200), kKeepAll, &anchor);
+  cache.insert(sampleAt(150), kKeepAll, &anchor);
+  EXPECT_TRUE(holds(cache.spanWithin(100, TimeCache::kNoHint, true).older, valueAt(100)));
+  EXPECT_TRUE(
+      approximately(cache.spanWithin(150, TimeCache::kNoHint, true).older, anchor * valueAt(150)));
+  EXPECT_TRUE(
+      approximately(cache.spanWithin(200, TimeCache::kNoHint, true).older, anchor * valueAt(200)));
+  EXPECT_TRUE(holds(cache.spanWithin(200, TimeCache::kNoHint, false).older, valueAt(200)));
+}
+
+}  // namespace
+}  // namespace lcmtf::detail
