@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds lcmtf and runs the tests: every test in a normal build, the concurrency tests under
-# ThreadSanitizer, a short libFuzzer run over decode-and-insert, then every unit test again in
-# an ASan+UBSan build.
+# ThreadSanitizer, short libFuzzer runs over decode-and-insert and over robot descriptions,
+# then every unit test again in an ASan+UBSan build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh --tests
@@ -19,7 +19,8 @@ ctest --test-dir build/tsan -R Concurrency --output-on-failure
 cmake -S . -B build/fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DLCMTF_SANITIZE=address,undefined -DLCMTF_BUILD_FUZZERS=ON \
   -DLCMTF_BUILD_JAVA=OFF -DLCMTF_BUILD_EXAMPLES=OFF -DLCMTF_BUILD_BENCHMARKS=OFF
-cmake --build build/fuzz -j"$jobs" --target tf_message_fuzzer write_sample_messages
+cmake --build build/fuzz -j"$jobs" --target tf_message_fuzzer write_sample_messages \
+  robot_description_fuzzer
 ctest --test-dir build/fuzz -R fuzz --output-on-failure
 
 cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=Debug -DLCMTF_SANITIZE=address,undefined \

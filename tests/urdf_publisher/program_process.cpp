@@ -101,6 +101,11 @@ bool ProgramProcess::waitForOutput(const std::string& text,
   return pollUntil([&] { return output().find(text) != std::string::npos; }, timeout);
 }
 
+bool ProgramProcess::waitForErrors(const std::string& text,
+                                   std::chrono::milliseconds timeout) const {
+  return pollUntil([&] { return errors().find(text) != std::string::npos; }, timeout);
+}
+
 std::string ProgramProcess::output() const { return readFile(output_path_); }
 
 std::string ProgramProcess::errors() const { return readFile(errors_path_); }

@@ -25,6 +25,8 @@ class ProgramProcess {
   std::optional<int> waitForExit(std::chrono::milliseconds timeout);
   /// Whether stdout has contained `text` within `timeout`.
   bool waitForOutput(const std::string& text, std::chrono::milliseconds timeout) const;
+  /// Whether stderr has contained `text` within `timeout`.
+  bool waitForErrors(const std::string& text, std::chrono::milliseconds timeout) const;
 
   std::string output() const;
   std::string errors() const;

@@ -1,6 +1,7 @@
 // The real programs as processes over udpm (ttl=0, a port of each test's own): a listener in
 // this process looks up what lcmtf-joint-publisher and lcmtf-urdf-publisher produce, late
-// joiners, a robot taken from the description channel, bad input, signals and exit codes.
+// joiners, a robot taken from the description channel, bad input, descriptions too large to
+// parse, signals and exit codes.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -9,9 +10,11 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -92,6 +95,33 @@ class Tap {
   std::atomic<bool> stopping_{false};
   std::thread thread_;
 };
+
+// A robot 40,001 elements deep, which would overflow the XML parser's stack.
+std::string tooDeepRobot() {
+  std::string text = "<robot name='d'>";
+  for (int level = 0; level < 40'000; ++level) text += "<x>";
+  return text;
+}
+
+// 150,000 links, each joined to the one before: urdfdom would free them recursively.
+void writeTooLongChain(const std::string& path) {
+  std::ofstream file(path);
+  file << "<robot name='chain'><link name='l0'/>";
+  for (int i = 1; i < 150'000; ++i) {
+    file << "<link name='l" << i << "'/><joint name='j" << i << "' type='fixed'><parent link='l"
+         << i - 1 << "'/><child link='l" << i << "'/></joint>";
+  }
+  file << "</robot>";
+}
+
+void sendDescription(lcm::LCM& lcm, const std::string& urdf) {
+  robot_description_t description;
+  description.utime = toUtime(now());
+  description.authority = "sender";
+  description.robot_name = "r";
+  description.urdf = urdf;
+  lcm.publish(kRobotDescriptionChannel, &description);
+}
 
 Eigen::Isometry3d expected(const ReferenceRobot& robot, const std::string& target,
                            const std::string& source, const std::map<std::string, double>& q) {
@@ -250,6 +280,51 @@ TEST(UrdfPublisherProcess, InvalidRobotsExitNonZeroNamingTheFileAndProblem) {
     EXPECT_THAT(bad_option.errors(), HasSubstr("--rate-of-fire"));
   }
   std::remove(broken.c_str());
+}
+
+TEST(UrdfPublisherProcess, CheckRefusesFilesTooDeepOrWithTooManyLinksNamingTheLimit) {
+  const std::string deep = testing::TempDir() + "/too_deep.urdf";
+  std::ofstream(deep) << tooDeepRobot();
+  const std::string chain = testing::TempDir() + "/too_long_chain.urdf";
+  writeTooLongChain(chain);
+  const std::pair<std::string, std::string> refusals[] = {
+      {deep, ": elements nested 40001 deep; the limit is 256"},
+      {chain, ": 150000 links; the limit is 10000"}};
+  for (const auto& [file, refusal] : refusals) {
+    ProgramProcess check(URDF_PUBLISHER_PROGRAM, {"--check", file});
+    EXPECT_EQ(check.waitForExit(kStartup), 1) << file;
+    EXPECT_EQ(check.errors(), "lcmtf-urdf-publisher: " + file + refusal + "\n");
+    EXPECT_EQ(check.output(), "");
+  }
+  std::remove(deep.c_str());
+  std::remove(chain.c_str());
+}
+
+TEST(UrdfPublisherProcess, ProgramsWaitingForADescriptionReportATooDeepOneOnceAndTakeTheNext) {
+  std::ostringstream valid;
+  valid << std::ifstream(EXAMPLE_URDF).rdbuf();
+  for (const std::string program : {URDF_PUBLISHER_PROGRAM, JOINT_PUBLISHER_PROGRAM}) {
+    const std::string url = testUrl();
+    Tap<resend_request_t> requests(url, kRobotDescriptionRequestChannel);
+    ProgramProcess waiting(program, {"--lcm-url", url});
+    ASSERT_TRUE(requests.waitFor(1, kStartup)) << waiting.errors();  // it listens from then on
+    lcm::LCM& lcm = requests.lcm();
+    for (int k = 0; k < 3; ++k) {
+      sendDescription(lcm, tooDeepRobot());
+      std::this_thread::sleep_for(100ms);
+    }
+    ASSERT_TRUE(waiting.waitForErrors("the limit is 256", kStartup)) << waiting.errors();
+    EXPECT_EQ(waiting.waitForExit(100ms), std::nullopt) << waiting.errors();
+
+    sendDescription(lcm, valid.str());
+    ASSERT_TRUE(waiting.waitForOutput("robot 'mobile_manipulator'", kStartup))
+        << program << waiting.output() << waiting.errors();
+    EXPECT_THAT(waiting.output(),
+                HasSubstr("refused 3 of the 4 robot descriptions heard on ROBOT_DESCRIPTION"));
+    EXPECT_EQ(waiting.errors(), std::filesystem::path(program).filename().string() +
+                                    ": refused a robot description: ROBOT_DESCRIPTION from sender: "
+                                    "elements nested 40001 deep; the limit is 256\n");
+  }
 }
 
 }  // namespace

@@ -277,7 +277,7 @@ struct DescriptionResponder {
   int requests = 0;
 };
 
-TEST_F(UrdfPublisherTest, WaitingForADescriptionAsksAndSkipsBadOnes) {
+TEST_F(UrdfPublisherTest, WaitingForADescriptionAsksAndSkipsAndCountsBadOnes) {
   DescriptionResponder responder;
   responder.lcm = &lcm_;
   robot_description_t bad = makeRobotDescription(robot_, "responder");
@@ -294,8 +294,11 @@ TEST_F(UrdfPublisherTest, WaitingForADescriptionAsksAndSkipsBadOnes) {
   std::vector<std::string> refusals;
   wait.reporter = [&refusals](const std::string& message) { refusals.push_back(message); };
   std::atomic<bool> stop{false};
-  const std::optional<RobotModel> robot = waitForRobotDescription(lcm_, wait, stop);
+  DescriptionWaitStatistics heard;
+  const std::optional<RobotModel> robot = waitForRobotDescription(lcm_, wait, stop, &heard);
   ASSERT_TRUE(robot);
+  EXPECT_EQ(heard.received, 3u);
+  EXPECT_EQ(heard.refused, 2u);
   EXPECT_EQ(robot->name, "mobile_manipulator");
   EXPECT_EQ(robot->source, "ROBOT_DESCRIPTION from responder");
   EXPECT_EQ(robot->movable_joints.size(), robot_.movable_joints.size());

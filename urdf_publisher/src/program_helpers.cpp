@@ -47,7 +47,12 @@ std::optional<RobotModel> waitForDescription(lcm::LCM& lcm, const std::string& c
   options.reporter = output.reporter();
   output.say("no URDF file given: waiting for a robot description on " + channel + " (asking on " +
              request_channel + ")");
-  std::optional<RobotModel> robot = waitForRobotDescription(lcm, options, stop);
+  DescriptionWaitStatistics heard;
+  std::optional<RobotModel> robot = waitForRobotDescription(lcm, options, stop, &heard);
+  if (heard.refused != 0) {
+    output.say("refused " + std::to_string(heard.refused) + " of the " +
+               std::to_string(heard.received) + " robot descriptions heard on " + channel);
+  }
   if (!robot && !stop) {
     output.complain("no valid robot description heard on " + channel + " within " +
                     formatNumber(std::chrono::duration<double>(timeout).count()) + " s");

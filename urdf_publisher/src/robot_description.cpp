@@ -15,6 +15,7 @@ class DescriptionCatcher {
 
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
     if (robot) return;
+    ++statistics.received;
     robot_description_t description;
     const DecodeResult decoded = decodeMessage(buffer->data, buffer->data_size, description);
     if (!decoded.ok) {
@@ -29,10 +30,14 @@ class DescriptionCatcher {
   }
 
   std::optional<RobotModel> robot;
+  DescriptionWaitStatistics statistics;
 
  private:
-  // The same refusal again (a sender that keeps resending it) is not repeated.
-  void refuse(const std::string& message) { reporter_.report(message, message); }
+  // The same refusal again (a sender that keeps resending it) is counted, not repeated.
+  void refuse(const std::string& message) {
+    ++statistics.refused;
+    reporter_.report(message, message);
+  }
 
   OnceReporter reporter_;
 };
@@ -51,7 +56,8 @@ robot_description_t makeRobotDescription(const RobotModel& robot, const std::str
 
 std::optional<RobotModel> waitForRobotDescription(lcm::LCM& lcm,
                                                   const DescriptionWaitOptions& options,
-                                                  const std::atomic<bool>& stop) {
+                                                  const std::atomic<bool>& stop,
+                                                  DescriptionWaitStatistics* statistics) {
   DescriptionCatcher catcher(options);
   lcm::Subscription* subscription =
       lcm.subscribe(options.channel, &DescriptionCatcher::onMessage, &catcher);
@@ -70,6 +76,7 @@ std::optional<RobotModel> waitForRobotDescription(lcm::LCM& lcm,
     lcm.handleTimeout(50);
   }
   lcm.unsubscribe(subscription);
+  if (statistics) *statistics = catcher.statistics;
   return std::move(catcher.robot);
 }
 

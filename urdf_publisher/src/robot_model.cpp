@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 #include "format_number.hpp"
@@ -144,6 +145,9 @@ std::string readWholeFile(const std::string& path) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throw UrdfError(path + ": cannot open: " + std::strerror(errno));
   std::string text;
+  std::error_code not_regular;
+  const std::uintmax_t size = std::filesystem::file_size(path, not_regular);
+  if (!not_regular) text.reserve(std::min<std::uintmax_t>(size, kMaxUrdfBytes + 1));
   char chunk[65536];
   while (file.read(chunk, sizeof chunk) || file.gcount() > 0) {
     text.append(chunk, static_cast<std::size_t>(file.gcount()));

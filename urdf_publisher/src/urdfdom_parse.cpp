@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "joint_loops.hpp"
+#include "lcmtf_urdf/description_limits.hpp"
 #include "lcmtf_urdf/robot_model.hpp"
 #include "xml_syntax.hpp"
 
@@ -36,6 +37,7 @@ std::mutex& consoleBridgeMutex() {
   if (urdf.find_first_not_of(" \t\r\n") == std::string::npos) {
     throw UrdfError(source + ": the robot description is empty");
   }
+  refuseOversizedDescription(urdf, source);
   TiXmlDocument document;
   parseXmlOrRefuse(urdf, source, document);
   refuseJointLoops(document, source);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -28,11 +29,18 @@ struct DescriptionWaitOptions {
   std::function<void(const std::string& message)> reporter;  ///< descriptions refused, and why
 };
 
+/// What a wait for a description heard.
+struct DescriptionWaitStatistics {
+  std::uint64_t received = 0;  ///< messages on the channel, refused ones included
+  std::uint64_t refused = 0;   ///< messages that did not decode or did not make a valid robot
+};
+
 /// The first description on options.channel that makes a valid robot, asking for one at once
-/// and every request_period; refused ones are reported. Nothing once `stop` is set or the
-/// timeout has passed.
+/// and every request_period; refused ones are reported (each kind once) and counted in
+/// `statistics` when given. Nothing once `stop` is set or the timeout has passed.
 std::optional<RobotModel> waitForRobotDescription(lcm::LCM& lcm,
                                                   const DescriptionWaitOptions& options,
-                                                  const std::atomic<bool>& stop);
+                                                  const std::atomic<bool>& stop,
+                                                  DescriptionWaitStatistics* statistics = nullptr);
 
 }  // namespace lcmtf::urdf
