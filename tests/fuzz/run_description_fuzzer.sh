@@ -1,5 +1,6 @@
 #!/bin/sh
-# Runs the robot description fuzzer for a while from a corpus seeded with real robots.
+# Runs the robot description fuzzer for a while from a corpus seeded with real robots, with a
+# dictionary of XML and URDF tokens.
 # usage: run_description_fuzzer.sh FUZZER WORK_DIR SECONDS SEED_URDF...
 set -eu
 fuzzer=$1 work=$2 seconds=$3
@@ -7,4 +8,4 @@ shift 3
 mkdir -p "$work/corpus" "$work/artifacts"
 cp "$@" "$work/corpus/"
 exec "$fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-  -artifact_prefix="$work/artifacts/" "$work/corpus"
+  -dict="$(dirname "$0")/robot_description.dict" -artifact_prefix="$work/artifacts/" "$work/corpus"

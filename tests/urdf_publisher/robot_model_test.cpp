@@ -123,6 +123,26 @@ TEST(RobotModel, MimicChainsResolveToTheJointAtTheirHead) {
   EXPECT_EQ(j3->mimic->leader, "j2");
 }
 
+TEST(RobotModel, AMimicChainAsLongAsTheLinkLimitResolvesEveryJointToItsHead) {
+  // j(k) = j(k-1) + 1 down a chain of 9,999 joints: each joint is resolved once, where walking
+  // up from every joint anew would take over a minute.
+  std::string urdf = "<robot name='r'><link name='l0'/>";
+  constexpr int kJoints = 9'999;
+  for (int k = 1; k <= kJoints; ++k) {
+    const std::string n = std::to_string(k);
+    urdf += "<link name='l" + n + "'/><joint name='j" + n + "' type='continuous'><parent link='l" +
+            std::to_string(k - 1) + "'/><child link='l" + n + "'/>" +
+            (k > 1 ? "<mimic joint='j" + std::to_string(k - 1) + "' offset='1'/>" : "") +
+            "</joint>";
+  }
+  const RobotModel robot = parseRobotModel(urdf + "</robot>", "t");
+  const MovableJoint* last = robot.findMovableJoint("j" + std::to_string(kJoints));
+  ASSERT_TRUE(last && last->resolved_mimic);
+  EXPECT_EQ(last->resolved_mimic->leader, "j1");
+  EXPECT_EQ(last->resolved_mimic->multiplier, 1.0);
+  EXPECT_EQ(last->resolved_mimic->offset, kJoints - 1.0);
+}
+
 TEST(RobotModel, FloatingAndPlanarJointsAreListedApartAndNotMovable) {
   const RobotModel floating = parseRobotModel(twoLinks("type='floating'", ""), "t");
   ASSERT_EQ(floating.unsupported_joints.size(), 1u);

@@ -22,50 +22,64 @@ std::string describeMissingLeader(const RobotModel& robot, const MovableJoint& f
   return start + ", which is not a joint of the robot";
 }
 
-std::string describeLoop(const std::vector<const MovableJoint*>& path, std::size_t loop_start) {
+std::string describeLoop(const RobotModel& robot, const std::vector<std::size_t>& path,
+                         std::size_t loop_start) {
   std::string text = "mimic joints form a loop: ";
-  for (std::size_t i = loop_start; i < path.size(); ++i) text += path[i]->name + " -> ";
-  return text + path[loop_start]->name;
+  for (std::size_t i = loop_start; i < path.size(); ++i) {
+    text += robot.movable_joints[path[i]].name + " -> ";
+  }
+  return text + robot.movable_joints[path[loop_start]].name;
 }
 
 }  // namespace
 
 void resolveMimicChains(RobotModel& robot) {
-  std::unordered_map<std::string, const MovableJoint*> by_name;
-  for (const MovableJoint& joint : robot.movable_joints) by_name.emplace(joint.name, &joint);
+  const std::vector<MovableJoint>& joints = robot.movable_joints;
+  std::unordered_map<std::string, std::size_t> index_of;
+  for (std::size_t j = 0; j < joints.size(); ++j) index_of.emplace(joints[j].name, j);
 
-  std::vector<Mimic> resolved(robot.movable_joints.size());
-  for (std::size_t j = 0; j < robot.movable_joints.size(); ++j) {
-    const MovableJoint& follower = robot.movable_joints[j];
-    if (!follower.mimic) continue;
-    // value(follower) = multiplier * value(current) + offset, walking up the chain.
-    double multiplier = 1.0;
-    double offset = 0.0;
-    std::vector<const MovableJoint*> path{&follower};
-    const MovableJoint* current = &follower;
-    while (current->mimic) {
-      const auto leader = by_name.find(current->mimic->leader);
-      if (leader == by_name.end()) {
-        throw UrdfError(robot.source + ": " + describeMissingLeader(robot, *current));
-      }
-      offset += multiplier * current->mimic->offset;
-      multiplier *= current->mimic->multiplier;
-      const auto seen = std::find(path.begin(), path.end(), leader->second);
-      if (seen != path.end()) {
+  // Each joint is resolved once, from its leader's resolved relation, so a chain of any
+  // length takes time in proportion to its length.
+  enum class Progress { kNotYet, kOnTheWayUp, kResolved };
+  std::vector<Progress> progress(joints.size(), Progress::kNotYet);
+  std::vector<Mimic> resolved(joints.size());
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    if (!joints[j].mimic || progress[j] == Progress::kResolved) continue;
+    std::vector<std::size_t> path;
+    std::size_t current = j;
+    while (joints[current].mimic && progress[current] != Progress::kResolved) {
+      if (progress[current] == Progress::kOnTheWayUp) {
+        const auto loop_start = std::find(path.begin(), path.end(), current) - path.begin();
         throw UrdfError(robot.source + ": " +
-                        describeLoop(path, static_cast<std::size_t>(seen - path.begin())));
+                        describeLoop(robot, path, static_cast<std::size_t>(loop_start)));
       }
-      path.push_back(leader->second);
+      progress[current] = Progress::kOnTheWayUp;
+      path.push_back(current);
+      const auto leader = index_of.find(joints[current].mimic->leader);
+      if (leader == index_of.end()) {
+        throw UrdfError(robot.source + ": " + describeMissingLeader(robot, joints[current]));
+      }
       current = leader->second;
     }
-    if (!std::isfinite(multiplier) || !std::isfinite(offset)) {
-      throw UrdfError(robot.source + ": the mimic chain from joint '" + follower.name + "' to '" +
-                      current->name + "' multiplies out to a value beyond double range");
+    // value(follower) = multiplier * value(leader) + offset, composed down from the top.
+    Mimic above = joints[current].mimic ? resolved[current] : Mimic{joints[current].name};
+    for (auto follower = path.rbegin(); follower != path.rend(); ++follower) {
+      const Mimic& own = *joints[*follower].mimic;
+      above = Mimic{above.leader, own.multiplier * above.multiplier,
+                    own.multiplier * above.offset + own.offset};
+      resolved[*follower] = above;
+      progress[*follower] = Progress::kResolved;
     }
-    resolved[j] = Mimic{current->name, multiplier, offset};
   }
-  for (std::size_t j = 0; j < robot.movable_joints.size(); ++j) {
-    if (robot.movable_joints[j].mimic) robot.movable_joints[j].resolved_mimic = resolved[j];
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    if (!joints[j].mimic) continue;
+    if (!std::isfinite(resolved[j].multiplier) || !std::isfinite(resolved[j].offset)) {
+      throw UrdfError(robot.source + ": the mimic chain from joint '" + joints[j].name + "' to '" +
+                      resolved[j].leader + "' multiplies out to a value beyond double range");
+    }
+  }
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    if (joints[j].mimic) robot.movable_joints[j].resolved_mimic = resolved[j];
   }
 }
 
