@@ -494,6 +494,18 @@ TEST_F(LatestTimeAcrossAParentChange, TimeTravelWithALatestLegIsMadeInTheTreeOfT
   EXPECT_TRUE(buffer_.canTransform("c", at(2), "x", kLatestTime, "c"));
 }
 
+TEST(BufferCoreLookup, RotationAFewUlpsOffUnitLengthIsStoredAndLookedUpAsGiven) {
+  // Its squared norm is 1 - 1.6e-12: close enough to unit to keep, as sent.
+  const Transform sent(Eigen::Vector3d(0.6, 2.5, -3.25),
+                       Eigen::Quaterniond(0.79999999999900528, 0, 0, -0.6));
+  BufferCore buffer;
+  put(buffer, "world", "base", at(1), pose({1, 0, 0}, 0.2, kZ));
+  put(buffer, "base", "camera", at(1), sent);
+  EXPECT_TRUE(identical(buffer.lookupTransform("base", "camera", kLatestTime).transform, sent));
+  EXPECT_TRUE(near(buffer.lookupTransform("camera", "world", at(1)).transform,
+                   (isometry({1, 0, 0}, 0.2, kZ) * sent.toIsometry()).inverse(), 1e-9));
+}
+
 TEST(BufferCoreLookup, LatestCommonTimeOfAFrameWithItselfIsItsNewestStamp) {
   BufferCore buffer;
   put(buffer, "world", "base", at(1), pose({0, 0, 0}, 0, kZ));

@@ -268,10 +268,13 @@ LookupFailure BufferCore::Impl::lookupByWalk(FrameId target, FrameId source, std
 
 namespace {
 
+// The same value but for rounding, whether or not the rotations are exactly unit (a stored
+// rotation may be a few ulps off).
 bool sameValue(const Transform& a, const Transform& b) {
   const double scale = 1.0 + a.translation.norm();
-  return (a.translation - b.translation).norm() <= 1e-9 * scale &&
-         std::abs(a.rotation.dot(b.rotation)) >= 1.0 - 1e-12;
+  const double cosine =
+      std::abs(a.rotation.dot(b.rotation)) / (a.rotation.norm() * b.rotation.norm());
+  return (a.translation - b.translation).norm() <= 1e-9 * scale && cosine >= 1.0 - 1e-12;
 }
 
 std::string valueText(const Transform& value) {
