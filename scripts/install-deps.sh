@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages lcmtf builds and tests with, only those that are missing.
-# With --tests it also installs what only the tests use: ROS tf2 (libtf2-dev and the
-# geometry_msgs headers), which the agreement test checks lcmtf against. Nothing lcmtf builds
-# for users links it.
+# With --tests it also installs what only the tests use: ROS tf2 (libtf2-dev, with the
+# geometry_msgs and tf2_geometry_msgs headers and KDL's), which the agreement tests check lcmtf
+# against. Nothing lcmtf builds for users links it.
 set -euo pipefail
 
 packages=(
@@ -14,7 +14,7 @@ packages=(
   clang libclang-rt-14-dev
 )
 if [ "${1:-}" = "--tests" ]; then
-  packages+=(libtf2-dev libgeometry-msgs-dev)
+  packages+=(libtf2-dev libgeometry-msgs-dev libtf2-geometry-msgs-dev liborocos-kdl-dev)
 fi
 
 missing=()
