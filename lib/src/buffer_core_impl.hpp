@@ -90,9 +90,11 @@ class BufferCore::Impl {
   LookupFailure lookupByWalk(FrameId target, FrameId source, std::int64_t& stamp,
                              Transform* value) const;
   /// Aborts with both answers unless lookupByWalk() at `requested` gives `answered` and, when
-  /// given, the `quick` value: every quick answer is checked so in the sanitizer builds.
+  /// given, the `quick` value, to rounding: every quick answer is checked so in the sanitizer
+  /// builds. `magnitude` is the sum of the translations the quick answer was composed from,
+  /// whose rounding errors it carries.
   void crossCheck(FrameId target, FrameId source, std::int64_t requested, std::int64_t answered,
-                  const Transform* quick) const;
+                  const Transform* quick, double magnitude) const;
   /// lookup() between two handles; throws when either is foreign or the lookup fails.
   void lookupHandles(FrameHandle target, FrameHandle source, std::int64_t& stamp,
                      Transform& value) const;

@@ -268,13 +268,14 @@ LookupFailure BufferCore::Impl::lookupByWalk(FrameId target, FrameId source, std
 
 namespace {
 
-// The same value but for rounding, whether or not the rotations are exactly unit (a stored
-// rotation may be a few ulps off).
-bool sameValue(const Transform& a, const Transform& b) {
-  const double scale = 1.0 + a.translation.norm();
+// The same value but for rounding: the translations to within a part in 1e9 of `magnitude`
+// (composing through a chain of large translations rounds at their scale), the rotations to
+// within the angle whose cosine is 1 - 1e-12, exactly unit or not.
+bool sameValue(const Transform& a, const Transform& b, double magnitude) {
   const double cosine =
       std::abs(a.rotation.dot(b.rotation)) / (a.rotation.norm() * b.rotation.norm());
-  return (a.translation - b.translation).norm() <= 1e-9 * scale && cosine >= 1.0 - 1e-12;
+  return (a.translation - b.translation).norm() <= 1e-9 * (1.0 + magnitude) &&
+         cosine >= 1.0 - 1e-12;
 }
 
 std::string valueText(const Transform& value) {
@@ -288,11 +289,12 @@ std::string valueText(const Transform& value) {
 }  // namespace
 
 void BufferCore::Impl::crossCheck(FrameId target, FrameId source, std::int64_t requested,
-                                  std::int64_t answered, const Transform* quick) const {
+                                  std::int64_t answered, const Transform* quick,
+                                  double magnitude) const {
   std::int64_t stamp = requested;
   Transform walked;
   const LookupFailure failure = lookupByWalk(target, source, stamp, quick ? &walked : nullptr);
-  if (!failure && stamp == answered && (!quick || sameValue(*quick, walked))) return;
+  if (!failure && stamp == answered && (!quick || sameValue(*quick, walked, magnitude))) return;
   const std::string walk_answer =
       failure ? describe(failure, "the walk")
               : "at " + std::to_string(stamp) + (quick ? ": " + valueText(walked) : std::string());

@@ -150,6 +150,13 @@ bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frame
   return true;
 }
 
+// The sum of the translations of a plan's step values, the scale of its rounding errors.
+double magnitudeOf(const PathPlan& plan, const Transform* const* values) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < plan.size(); ++i) sum += values[i]->translation.norm();
+  return sum;
+}
+
 // Interpolation tasks and rooms for the steps of `Paths` quick paths.
 template <std::size_t Paths>
 struct QuickSamplerRoom {
@@ -167,6 +174,7 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
                 parent_changing_edges_ != 0, path)) {
     return false;
   }
+  double magnitude = 0.0;
   if (value) {
     QuickSamplerRoom<1> room;
     detail::PathSampler sampler(room.tasks, room.rooms);
@@ -174,8 +182,11 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
     sampler.sample(path.plan, values);
     sampler.run();
     detail::productOf(path.plan, values, *value);
+    if (detail::kCrossCheckQuickLookups) magnitude = magnitudeOf(path.plan, values);
   }
-  if (detail::kCrossCheckQuickLookups) crossCheck(target, source, stamp, path.plan.at, value);
+  if (detail::kCrossCheckQuickLookups) {
+    crossCheck(target, source, stamp, path.plan.at, value, magnitude);
+  }
   stamp = path.plan.at;
   return true;
 }
@@ -205,8 +216,10 @@ bool BufferCore::Impl::quickTimeTravel(FrameId target, std::int64_t& target_stam
   detail::productOf(source_path.plan, source_values, fixed_T_source);
   detail::productOf(target_path.plan, target_values, target_T_fixed);
   if (detail::kCrossCheckQuickLookups) {
-    crossCheck(fixed, source, source_stamp, source_path.plan.at, &fixed_T_source);
-    crossCheck(target, fixed, target_stamp, target_path.plan.at, &target_T_fixed);
+    crossCheck(fixed, source, source_stamp, source_path.plan.at, &fixed_T_source,
+               magnitudeOf(source_path.plan, source_values));
+    crossCheck(target, fixed, target_stamp, target_path.plan.at, &target_T_fixed,
+               magnitudeOf(target_path.plan, target_values));
   }
   value = detail::composed(target_T_fixed, fixed_T_source);
   source_stamp = source_path.plan.at;
