@@ -269,12 +269,16 @@ LookupFailure BufferCore::Impl::lookupByWalk(FrameId target, FrameId source, std
 namespace {
 
 // The same value but for rounding: the translations to within a part in 1e9 of `magnitude`
-// (composing through a chain of large translations rounds at their scale), the rotations to
+// (composing through a chain of large translations rounds at their scale), or both overflowed
+// (finite translations near the largest double compose to infinities), and the rotations to
 // within the angle whose cosine is 1 - 1e-12, exactly unit or not.
 bool sameValue(const Transform& a, const Transform& b, double magnitude) {
   const double cosine =
       std::abs(a.rotation.dot(b.rotation)) / (a.rotation.norm() * b.rotation.norm());
-  return (a.translation - b.translation).norm() <= 1e-9 * (1.0 + magnitude) &&
+  const bool finite = a.translation.allFinite() && b.translation.allFinite();
+  const bool overflowed = !a.translation.allFinite() && !b.translation.allFinite();
+  return (overflowed ||
+          (finite && (a.translation - b.translation).norm() <= 1e-9 * (1.0 + magnitude))) &&
          cosine >= 1.0 - 1e-12;
 }
 
