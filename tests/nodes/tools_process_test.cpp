@@ -205,7 +205,9 @@ TEST(EchoProcess, GivesUpAtTheTimeoutNamingWhatIsMissing) {
 
 TEST(EchoProcess, LooksUpAFixedInstantOrAWhileAgo) {
   const std::string url = testUrl();
-  const TimePoint instant = now() + 300ms;  // in the past once the data around it has come
+  // In the past once the data around it has come, and late enough that a publisher slow to
+  // start on a loaded machine still has data from before it.
+  const TimePoint instant = now() + 2s;
   auto map = publisher(url, "localizer", 50, "map", "base");
   ToolProcess fixed(LCMTF_ECHO_PATH, {"--lcm-url", url, "--once", "--timeout", "10", "--time",
                                       toString(instant), "map", "base"});
