@@ -253,9 +253,14 @@ LookupFailure BufferCore::Impl::lookupByWalk(FrameId target, FrameId source, std
   } else {
     // As tf does: the latest common time is found in the tree as of each edge's newest sample,
     // and the lookup then made in the tree as it was at that time.
-    if (stamp == 0) failure = latestCommonTimeByWalk(target, source, stamp);
+    // When that time is none (only static edges on the way), the walk that found it has the
+    // path already.
+    const bool latest = stamp == 0;
+    if (latest) failure = latestCommonTimeByWalk(target, source, stamp);
     FrameId ancestor = kNoFrame;
-    if (!failure) failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor);
+    if (!failure && !(latest && stamp == 0)) {
+      failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor);
+    }
   }
   if (failure) {
     failure.target = target;
