@@ -174,6 +174,7 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
                 parent_changing_edges_ != 0, path)) {
     return false;
   }
+  const bool cross_check = detail::crossCheckQuickLookups();
   double magnitude = 0.0;
   if (value) {
     QuickSamplerRoom<1> room;
@@ -182,9 +183,9 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
     sampler.sample(path.plan, values);
     sampler.run();
     detail::productOf(path.plan, values, *value);
-    if (detail::kCrossCheckQuickLookups) magnitude = magnitudeOf(path.plan, values);
+    if (cross_check) magnitude = magnitudeOf(path.plan, values);
   }
-  if (detail::kCrossCheckQuickLookups) {
+  if (cross_check) {
     crossCheck(target, source, stamp, path.plan.at, value, magnitude);
   }
   stamp = path.plan.at;
@@ -215,7 +216,7 @@ bool BufferCore::Impl::quickTimeTravel(FrameId target, std::int64_t& target_stam
   Transform target_T_fixed;
   detail::productOf(source_path.plan, source_values, fixed_T_source);
   detail::productOf(target_path.plan, target_values, target_T_fixed);
-  if (detail::kCrossCheckQuickLookups) {
+  if (detail::crossCheckQuickLookups()) {
     crossCheck(fixed, source, source_stamp, source_path.plan.at, &fixed_T_source,
                magnitudeOf(source_path.plan, source_values));
     crossCheck(target, fixed, target_stamp, target_path.plan.at, &target_T_fixed,

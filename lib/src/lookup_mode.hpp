@@ -12,12 +12,22 @@ inline bool quickLookupsEnabled() { return quick_lookups_enabled.load(std::memor
 /// Turns quick lookups on or off for every buffer in the process (for tests).
 void setQuickLookupsEnabled(bool enabled);
 
-/// Whether every quick answer is recomputed by the walk, and a disagreement aborts the program
-/// with both answers: in the sanitizer builds, where the tests run slowly anyway.
+/// Whether this build can recompute every quick answer by the walk and abort the program with
+/// both answers when they disagree: the sanitizer builds, where the tests run slowly anyway.
 #ifdef LCMTF_CROSS_CHECK_LOOKUPS
-constexpr bool kCrossCheckQuickLookups = true;
+constexpr bool kCrossCheckBuild = true;
 #else
-constexpr bool kCrossCheckQuickLookups = false;
+constexpr bool kCrossCheckBuild = false;
 #endif
+
+extern std::atomic<bool> cross_check_enabled;
+
+/// Whether quick answers are checked against the walk now: in a cross-check build, unless a
+/// program turned it off (the fuzzers do: their absurd magnitudes probe rounding, not logic).
+inline bool crossCheckQuickLookups() {
+  return kCrossCheckBuild && cross_check_enabled.load(std::memory_order_relaxed);
+}
+/// Turns the check of quick answers against the walk on or off, in a cross-check build.
+void setCrossCheckEnabled(bool enabled);
 
 }  // namespace lcmtf::detail

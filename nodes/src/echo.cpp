@@ -29,9 +29,6 @@ constexpr const char* kExamples =
     "  lcmtf-echo --time 1700000000.25 --once --timeout 5 map base_link\n"
     "                                            at that instant (a replayed log), then exit";
 
-// Longest --time before now that the buffer keeps history for, beyond the default.
-constexpr Duration kHistoryMargin = std::chrono::seconds(5);
-
 std::string knownFrames(const BufferCore& buffer) {
   std::vector<std::string> names = buffer.getAllFrameNames();
   std::sort(names.begin(), names.end());
