@@ -1,6 +1,8 @@
 #include "lcmtf/buffer_core.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <iostream>
 #include <shared_mutex>
 
@@ -25,14 +27,28 @@ const char* describe(InsertRejection kind) {
       return "frame is its own parent";
     case InsertRejection::kOlderThanHistory:
       return "older than the history kept";
+    case InsertRejection::kEdgeFull:
+      return "older than every sample of a full edge";
     case InsertRejection::kCount:
       break;
   }
   return "unknown";
 }
 
+namespace {
+
+// Enough for the whole cache time at 1.2 kHz, and never fewer than a slow edge needs.
+std::size_t defaultMostSamplesPerEdge(Duration cache_time) {
+  constexpr double kCoveredRate = 1200.0;
+  const double seconds = std::chrono::duration<double>(cache_time).count();
+  return static_cast<std::size_t>(std::clamp(std::ceil(seconds * kCoveredRate), 64.0, 1e12));
+}
+
+}  // namespace
+
 BufferCore::Impl::Impl(Duration cache_time)
     : cache_time_(cache_time.count()),
+      most_samples_per_edge_(defaultMostSamplesPerEdge(cache_time)),
       reporter_([](const std::string& message) { std::cerr << "lcmtf: " << message << '\n'; }) {
   frames_.emplace_back();  // id 0: no frame
 }
@@ -49,18 +65,6 @@ FrameId BufferCore::Impl::addFrame(std::string_view name) {
   record.static_top = id;
   ids_.insert(stored, id);
   return id;
-}
-
-std::uint32_t BufferCore::Impl::authorityId(const std::string& authority) {
-  // Most inserts come from the same sender as the one before.
-  if (last_authority_ != 0 && authorities_[last_authority_ - 1] == authority) {
-    return last_authority_;
-  }
-  auto [found, added] =
-      authority_ids_.try_emplace(authority, static_cast<std::uint32_t>(authorities_.size()) + 1);
-  if (added) authorities_.push_back(authority);
-  last_authority_ = found->second;
-  return last_authority_;
 }
 
 void BufferCore::Impl::reportCallbackFailure(const std::string& what) {
@@ -151,6 +155,13 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
              " and the cache time is " + toString(Duration(cache_time_));
     return InsertRejection::kOlderThanHistory;
   }
+  if (!is_static && known_child != kNoFrame &&
+      frames_[known_child].cache.isFullAndOlder(stamp, most_samples_per_edge_)) {
+    reason = edgeName(transform) + " already holds its most samples (" +
+             std::to_string(most_samples_per_edge_) + "), all newer than this one at " +
+             toString(transform.stamp);
+    return InsertRejection::kEdgeFull;
+  }
   const FrameId child_id = known_child != kNoFrame ? known_child : addFrame(child);
   // An edge keeps its parent from one sample to the next: compare before hashing the name.
   const FrameId usual_parent = frames_[child_id].cache.newestParent();
@@ -176,20 +187,22 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
     }
   } else {
     const FrameId parent_before = record.cache.newestParent();
-    if (record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_,
-                            anchorOf(frames_, parent_id)) == detail::InsertOutcome::kReplaced) {
-      ++statistics_.replaced;
-    }
+    const detail::InsertOutcome outcome =
+        record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_,
+                            anchorOf(frames_, parent_id), most_samples_per_edge_);
+    if (outcome == detail::InsertOutcome::kReplaced) ++statistics_.replaced;
+    if (outcome == detail::InsertOutcome::kAddedDroppingOldest) ++statistics_.dropped_for_room;
     if (was_static) updateStaticChains();
     if (was_static || record.cache.newestParent() != parent_before) noteShapeChange(child_id);
   }
   if (record.cache.changesParent() && !changed_parent) ++parent_changing_edges_;
   if (!record.cache.changesParent() && changed_parent) --parent_changing_edges_;
-  const std::uint32_t authority_id = authorityId(authority);
+  const std::uint32_t authority_id = authorities_.idOf(authority);
   if (record.authority != 0 && record.authority != authority_id) {
     ++record.authority_conflicts;
     ++statistics_.authority_conflicts;
   }
+  authorities_.moveEdge(record.authority, authority_id);
   record.authority = authority_id;
   ++statistics_.inserted;
   if (normalized) ++statistics_.normalized;
@@ -567,7 +580,49 @@ void BufferCore::clear() {
   impl_->refreshRootPaths();
 }
 
+std::size_t BufferCore::clearAuthority(const std::string& authority) {
+  ExclusiveLock lock(impl_->lock_);
+  const std::uint32_t id = impl_->authorities_.find(authority);
+  if (id == 0) return 0;
+  std::size_t cleared = 0;
+  for (FrameRecord& frame : impl_->frames_) {
+    if (frame.authority != id || frame.cache.isStatic() || frame.cache.empty()) continue;
+    if (frame.cache.changesParent()) --impl_->parent_changing_edges_;
+    frame.cache.clearHistory();
+    ++cleared;
+  }
+  if (cleared > 0) {
+    impl_->root_paths_stale_ = true;
+    impl_->refreshRootPaths();
+  }
+  return cleared;
+}
+
 Duration BufferCore::cacheTime() const { return Duration(impl_->cache_time_); }
+
+void BufferCore::setMostSamplesPerEdge(std::size_t most) {
+  if (most < 2) throw std::invalid_argument("setMostSamplesPerEdge: an edge needs at least 2");
+  ExclusiveLock lock(impl_->lock_);
+  impl_->most_samples_per_edge_ = most;
+}
+
+std::size_t BufferCore::mostSamplesPerEdge() const {
+  SharedLock lock(impl_->lock_);
+  return impl_->most_samples_per_edge_;
+}
+
+void BufferCore::setMaxInterpolationGap(Duration gap) {
+  if (gap < Duration::zero()) {
+    throw std::invalid_argument("setMaxInterpolationGap: the gap must not be negative");
+  }
+  ExclusiveLock lock(impl_->lock_);
+  impl_->max_gap_ = gap.count();
+}
+
+Duration BufferCore::maxInterpolationGap() const {
+  SharedLock lock(impl_->lock_);
+  return Duration(impl_->max_gap_);
+}
 
 InsertStatistics BufferCore::statistics() const {
   SharedLock lock(impl_->lock_);

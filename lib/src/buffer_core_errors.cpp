@@ -47,6 +47,14 @@ std::string BufferCore::Impl::describe(const LookupFailure& failure,
              toString(Duration(gap)) + (past ? " before its oldest" : " after its newest") +
              " sample";
     }
+    case Kind::kGap:
+      return what + " " + atTime(failure.requested) + " falls in a gap in the data: edge " +
+             quoted(failure.edge_parent) + " -> " + quoted(failure.edge_child) +
+             " has samples at " + toString(fromUtime(failure.oldest)) + " and " +
+             toString(fromUtime(failure.newest)) + ", " +
+             toString(Duration(detail::saturatingSubtract(failure.newest, failure.oldest))) +
+             " apart, more than the maximum interpolation gap of " +
+             toString(Duration(max_gap_));
   }
   return what;
 }
@@ -66,6 +74,8 @@ void BufferCore::Impl::raise(const LookupFailure& failure, const std::string& wh
       throw PastExtrapolationException(message);
     case Kind::kFuture:
       throw FutureExtrapolationException(message);
+    case Kind::kGap:
+      throw InterpolationGapException(message);
     case Kind::kNone:
       break;
   }

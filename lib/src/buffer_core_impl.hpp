@@ -10,6 +10,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "authority_table.hpp"
 #include "frame_name_index.hpp"
 #include "frame_record.hpp"
 #include "lcmtf/buffer_core.hpp"
@@ -44,18 +45,20 @@ struct PathEdge {
 /// Why a lookup failed, kept as plain data so a successful lookup pays nothing for it and
 /// canTransform pays for no message it does not print.
 struct LookupFailure {
-  enum class Kind { kNone, kInvalidName, kUnknownFrame, kNotConnected, kLoop, kPast, kFuture };
+  enum class Kind {
+    kNone, kInvalidName, kUnknownFrame, kNotConnected, kLoop, kPast, kFuture, kGap
+  };
   Kind kind = Kind::kNone;
   const std::string* frame = nullptr;  // the bad or unknown name, as the caller gave it
   const char* role = "";               // "target", "source", "fixed"
   FrameId target = kNoFrame;
   FrameId source = kNoFrame;
-  FrameId edge_child = kNoFrame;  // extrapolation: the edge (child -> its parent)
+  FrameId edge_child = kNoFrame;  // extrapolation or gap: the edge (child -> its parent)
   FrameId edge_parent = kNoFrame;
   FrameId loop_start = kNoFrame;  // a frame whose ancestors loop
   std::int64_t requested = 0;
-  std::int64_t oldest = 0;
-  std::int64_t newest = 0;
+  std::int64_t oldest = 0;  // extrapolation: the edge's oldest and newest samples; gap: the two
+  std::int64_t newest = 0;  // samples around the requested time
   explicit operator bool() const { return kind != Kind::kNone; }
 };
 
@@ -115,6 +118,8 @@ class BufferCore::Impl {
   bool quickTimeTravel(FrameId target, std::int64_t& target_stamp, FrameId source,
                        std::int64_t& source_stamp, FrameId fixed, Transform& value) const;
   LookupFailure latestCommonTime(FrameId target, FrameId source, std::int64_t& stamp) const;
+  /// A gap wider than max_gap_ between the samples around `stamp` on the walked edges.
+  LookupFailure findGap(const std::vector<PathEdge>& edges, std::int64_t stamp) const;
   /// latestCommonTime() of two different frames by the walk alone.
   LookupFailure latestCommonTimeByWalk(FrameId target, FrameId source, std::int64_t& stamp) const;
   /// The edges from each frame up to their common ancestor at `stamp` (0: the tree as of each
@@ -177,13 +182,16 @@ class BufferCore::Impl {
   void notifyDecidedRequests();
   void reportOnce(InsertRejection kind, const std::string& message);
   void reportCallbackFailure(const std::string& what);
-  std::uint32_t authorityId(const std::string& authority);  // exclusive lock
 
   /// Requests decided by the data now stored; call without lock_ and run them afterwards.
   std::vector<std::function<void()>> collectDecidedRequests();
 
   mutable detail::ReadMostlyLock lock_;
   const std::int64_t cache_time_;
+  std::size_t most_samples_per_edge_;
+  // Lookups between two samples further apart than this fail (0: no limit). While there is a
+  // limit, every lookup takes the walk, which checks it.
+  std::int64_t max_gap_ = 0;
   detail::NameArena names_;  // stable storage behind FrameRecord::name
   std::vector<FrameRecord> frames_;
   detail::FrameNameIndex ids_;
@@ -192,9 +200,7 @@ class BufferCore::Impl {
   // How many dynamic edges hold samples with more than one parent: while there are none, the
   // tree is the same at every time, above the point where two paths meet as well.
   std::size_t parent_changing_edges_ = 0;
-  std::vector<std::string> authorities_;
-  std::unordered_map<std::string, std::uint32_t> authority_ids_;
-  std::uint32_t last_authority_ = 0;
+  detail::AuthorityTable authorities_;
   InsertStatistics statistics_;
 
   std::mutex reporter_mutex_;

@@ -67,7 +67,7 @@ std::string BufferCore::allFramesAsYaml() const {
     yaml << yamlQuoted(frame.name) << ":\n"
          << "  parent: " << yamlQuoted(impl_->nameOf(frame.cache.newestParent())) << '\n'
          << "  authority: "
-         << yamlQuoted(frame.authority ? impl_->authorities_[frame.authority - 1] : "") << '\n'
+         << yamlQuoted(frame.authority ? impl_->authorities_.name(frame.authority) : "") << '\n'
          << "  static: " << (edge.is_static ? "true" : "false") << '\n'
          << "  rate: " << fixed(edge.rate_hz, 3) << '\n'
          << "  samples: " << edge.samples << '\n'
@@ -92,7 +92,7 @@ std::string BufferCore::allFramesAsDot() const {
     if (frame.cache.empty()) continue;
     const EdgeSummary edge = summarize(frame.cache);
     const std::string authority =
-        frame.authority ? impl_->authorities_[frame.authority - 1] : std::string();
+        frame.authority ? impl_->authorities_.name(frame.authority) : std::string();
     std::string label = "Broadcaster: " + authority + "\\n";
     if (edge.is_static) {
       label += "static";

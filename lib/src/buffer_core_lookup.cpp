@@ -25,7 +25,7 @@ struct WalkScratch {
   std::vector<detail::TransformRoom> rooms;
   std::vector<const Transform*> values;
 };
-__attribute__((tls_model("initial-exec"))) thread_local WalkScratch scratch;
+thread_local WalkScratch scratch;
 
 }  // namespace
 
@@ -64,14 +64,20 @@ void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t 
 }
 
 // The value of the path the walk found at `stamp`, by the same sampler and product as the
-// quick lookups.
+// quick lookups. At stamp 0 (the latest common time of edges with samples stamped 0, as a
+// sender with no clock may send) each edge gives its newest sample, as in tf.
 Transform pathValue(const std::vector<FrameRecord>& frames, WalkScratch& s, std::int64_t stamp) {
   const std::size_t count = s.source_edges.size() + s.target_edges.size();
   s.steps.clear();
   for (const auto* edges : {&s.source_edges, &s.target_edges}) {
     for (const PathEdge& edge : *edges) {
       const detail::TimeCache* cache = edge.isDynamic() ? &frames[edge.child].cache : nullptr;
-      s.steps.push_back({cache, edge.fixed, false, false, detail::TimeCache::kNoHint});
+      const Transform* fixed = edge.fixed;
+      if (cache && stamp == 0) {
+        fixed = &cache->newestTransform();
+        cache = nullptr;
+      }
+      s.steps.push_back({cache, fixed, false, false, detail::TimeCache::kNoHint});
     }
   }
   if (s.tasks.size() < count) {
@@ -238,6 +244,23 @@ LookupFailure BufferCore::Impl::latestCommonTimeByWalk(FrameId target, FrameId s
   return failure;
 }
 
+LookupFailure BufferCore::Impl::findGap(const std::vector<PathEdge>& edges,
+                                        std::int64_t stamp) const {
+  for (const PathEdge& edge : edges) {
+    if (!edge.isDynamic()) continue;
+    LookupFailure failure;
+    if (frames_[edge.child].cache.samplesAround(stamp, failure.oldest, failure.newest) &&
+        detail::saturatingSubtract(failure.newest, failure.oldest) > max_gap_) {
+      failure.kind = LookupFailure::Kind::kGap;
+      failure.edge_child = edge.child;
+      failure.edge_parent = edge.parent;
+      failure.requested = stamp;
+      return failure;
+    }
+  }
+  return {};
+}
+
 LookupFailure BufferCore::Impl::lookup(FrameId target, FrameId source, std::int64_t& stamp,
                                        Transform* value) const {
   if (target != source && quickLookup(target, source, stamp, value)) return {};
@@ -260,6 +283,8 @@ LookupFailure BufferCore::Impl::lookupByWalk(FrameId target, FrameId source, std
     FrameId ancestor = kNoFrame;
     if (!failure && !(latest && stamp == 0)) {
       failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor);
+      if (!failure && max_gap_ != 0 && stamp != 0) failure = findGap(s.source_edges, stamp);
+      if (!failure && max_gap_ != 0 && stamp != 0) failure = findGap(s.target_edges, stamp);
     }
   }
   if (failure) {

@@ -134,6 +134,8 @@ bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frame
   std::int64_t at = stamp;
   if (stamp == 0 && common_newest.any_dynamic) {
     at = common_newest.stamp;
+    // Samples stamped 0 itself: time 0 then means each edge's newest sample, as the walk has it.
+    if (at == 0) return false;
     for (std::size_t i = 0; i < count; ++i) {
       PlanStep& step = steps[i];
       if (!step.cache) continue;
@@ -168,7 +170,7 @@ struct QuickSamplerRoom {
 
 bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t& stamp,
                                    Transform* value) const {
-  if (!detail::quickLookupsEnabled()) return false;
+  if (!detail::quickLookupsEnabled() || max_gap_ != 0) return false;
   QuickPath path;
   if (!planPath(root_paths_, frames_, target, source, stamp, value != nullptr,
                 parent_changing_edges_ != 0, path)) {
@@ -195,7 +197,9 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
 bool BufferCore::Impl::quickTimeTravel(FrameId target, std::int64_t& target_stamp, FrameId source,
                                        std::int64_t& source_stamp, FrameId fixed,
                                        Transform& value) const {
-  if (!detail::quickLookupsEnabled() || source == fixed || target == fixed) return false;
+  if (!detail::quickLookupsEnabled() || max_gap_ != 0 || source == fixed || target == fixed) {
+    return false;
+  }
   QuickPath source_path;
   QuickPath target_path;
   const bool parent_changes = parent_changing_edges_ != 0;

@@ -3,13 +3,18 @@
 #include <array>
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
+#include <mutex>
 
 namespace lcmtf::detail {
 
 /// A reader-writer lock for data read far more often than written. Each reader thread counts
 /// itself in a slot on a cache line of its own, so readers never write memory that other
 /// readers touch and scale with the number of cores; a writer raises a flag (writers take turns
-/// on it), waits until every slot is empty, and has the data to itself.
+/// on a mutex), waits until every slot is empty, and has the data to itself.
+///
+/// Whoever must wait spins briefly, then sleeps in the kernel until the other side wakes it:
+/// a real-time thread never spins on a lower-priority one, which could then never run.
 class ReadMostlyLock {
  public:
   ReadMostlyLock() = default;
@@ -27,9 +32,20 @@ class ReadMostlyLock {
     std::atomic<std::size_t> readers{0};
   };
   Slot& mySlot() const;
+  void leave(Slot& slot) const;
+  void waitWhileWriting() const;
+  void waitUntilEmpty(const Slot& slot);
 
   mutable std::array<Slot, kSlots> slots_;
-  alignas(64) std::atomic<bool> writing_{false};
+  // Read by every reader: on a line of its own, written only when a writer comes and goes.
+  alignas(64) std::atomic<std::uint32_t> writing_{0};
+  mutable std::atomic<std::uint32_t> writer_sleeping_{0};
+  // Changed then woken: by a writer leaving (readers sleep on it), by a reader leaving while a
+  // writer sleeps (the writer sleeps on it).
+  alignas(64) mutable std::atomic<std::uint32_t> writer_left_{0};
+  mutable std::atomic<std::uint32_t> readers_sleeping_{0};
+  alignas(64) mutable std::atomic<std::uint32_t> reader_left_{0};
+  std::mutex writers_;
 };
 
 }  // namespace lcmtf::detail

@@ -95,9 +95,11 @@ void TimeCache::noteParentChanges(std::size_t index) {
 // Grows straight to the size the edge's rate so far says a full window needs, so that an edge
 // reaches its working size after one small copy rather than a series of doublings (whose last
 // copies, of every busy edge at once, stall a listener).
-void TimeCache::grow(std::int64_t cache_time) {
+void TimeCache::grow(std::int64_t cache_time, std::size_t most_samples) {
   constexpr std::size_t kLargestJump = std::size_t{1} << 16;
   std::size_t wanted = std::max<std::size_t>(16, stamps_.size() * 2);
+  std::size_t largest = 16;
+  while (largest < most_samples && largest < (std::size_t{1} << 40)) largest *= 2;
   if (count_ >= 2 && newest_stamp_ > oldest_stamp_ && cache_time > 0) {
     const double window_samples = static_cast<double>(count_ - 1) *
                                       static_cast<double>(cache_time) /
@@ -106,6 +108,7 @@ void TimeCache::grow(std::int64_t cache_time) {
     const double with_margin = std::min(window_samples + 16.0, double(kLargestJump));
     while (static_cast<double>(wanted) < with_margin) wanted *= 2;
   }
+  wanted = std::min(wanted, largest);
   UnfilledArray<SampleTime> stamps(wanted);
   UnfilledArray<FrameId> parents(wanted);
   TransformRing transforms(wanted);
@@ -125,7 +128,8 @@ void TimeCache::grow(std::int64_t cache_time) {
 }
 
 InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_time,
-                                const Transform* anchor_T_parent) {
+                                const Transform* anchor_T_parent, std::size_t most_samples) {
+  most_samples = std::max<std::size_t>(most_samples, 2);
   if (is_static_) {
     mask_ = 0;
     count_ = 0;
@@ -134,7 +138,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
   if (isTooOld(sample.stamp, cache_time)) return InsertOutcome::kTooOld;
   if (anchor_T_parent && !anchoring_) startAnchoring();
   if (count_ > 0 && sample.stamp <= newest_stamp_) {
-    const std::size_t index = indexAtOrBefore(sample.stamp);
+    std::size_t index = indexAtOrBefore(sample.stamp);
     if (index < count_ && stampAt(index) == sample.stamp) {
       put(index, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
       refreshArcsAround(index);
@@ -142,18 +146,27 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
       refreshEnds();
       return InsertOutcome::kReplaced;
     }
-    if (count_ == stamps_.size()) grow(cache_time);
+    bool dropped = false;
+    if (count_ >= most_samples) {
+      if (index == count_) return InsertOutcome::kFullAndOlder;
+      dropOldest();
+      dropped = true;
+      --index;
+    }
+    if (count_ == stamps_.size()) grow(cache_time, most_samples);
     // Shift the samples newer than `sample` one place towards the back.
-    const std::size_t insert_at = index < count_ ? index + 1 : 0;
+    const std::size_t insert_at = dropped || index < count_ ? index + 1 : 0;
     for (std::size_t i = count_; i > insert_at; --i) move(i - 1, i);
     put(insert_at, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
     ++count_;
     refreshArcsAround(insert_at);
     noteParentChanges(insert_at);
     refreshEnds();
-    return InsertOutcome::kAdded;
+    return dropped ? InsertOutcome::kAddedDroppingOldest : InsertOutcome::kAdded;
   }
-  if (count_ == stamps_.size()) grow(cache_time);
+  const bool dropped = count_ >= most_samples;
+  if (dropped) dropOldest();
+  if (count_ == stamps_.size()) grow(cache_time, most_samples);
   // From the newest sample's copy: its slot in the ring may have left the cache by now.
   if (count_ > 0) {
     stamps_[slot(count_ - 1)].arc_to_next =
@@ -163,12 +176,9 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
   ++count_;
   noteParentChanges(count_ - 1);
   const std::int64_t horizon = saturatingSubtract(sample.stamp, cache_time);
-  while (stampAt(0) < horizon) {
-    head_ = (head_ + 1) & mask_;
-    --count_;
-  }
+  while (stampAt(0) < horizon) dropOldest();
   refreshEnds();
-  return InsertOutcome::kAdded;
+  return dropped ? InsertOutcome::kAddedDroppingOldest : InsertOutcome::kAdded;
 }
 
 // The guess was wrong: a few steps from it usually find the place, else a binary search.

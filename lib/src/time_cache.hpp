@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 
@@ -40,7 +41,13 @@ struct SampleSpan {
   double arc_squared = 0.0;  // signedArcSquared(older, newer) when `newer`
 };
 
-enum class InsertOutcome { kAdded, kReplaced, kTooOld };
+enum class InsertOutcome {
+  kAdded,
+  kAddedDroppingOldest,  // the edge held its most samples: the oldest made room
+  kReplaced,
+  kTooOld,
+  kFullAndOlder,  // the edge held its most samples, all newer than this one
+};
 
 /// a - b without overflow: clamped to the int64 range (stamps from the network may be anything).
 inline std::int64_t saturatingSubtract(std::int64_t a, std::int64_t b) {
@@ -62,11 +69,14 @@ class TimeCache {
   /// Makes the edge static with this value, dropping any history.
   void setStatic(FrameId parent, const Transform& transform);
   /// Adds a sample in time order (the edge becomes dynamic), pruning samples older than
-  /// `cache_time` behind the newest; a sample already older than that window is refused.
-  /// `anchor_T_parent` is the transform that anchors the sample (see reanchor()), or null for
-  /// the identity.
+  /// `cache_time` behind the newest; a sample already older than that window is refused. An
+  /// edge holds at most `most_samples` (at least 2): beyond that its oldest sample makes room,
+  /// and a sample older than all it holds is refused. `anchor_T_parent` is the transform that
+  /// anchors the sample (see reanchor()), or null for the identity.
   InsertOutcome insert(const EdgeSample& sample, std::int64_t cache_time,
-                       const Transform* anchor_T_parent = nullptr);
+                       const Transform* anchor_T_parent = nullptr,
+                       std::size_t most_samples = kUnbounded);
+  static constexpr std::size_t kUnbounded = static_cast<std::size_t>(-1);
   /// Recomputes each sample's anchored value, anchorOf(parent) * transform, where
   /// anchorOf(parent) gives a const Transform* (null for the identity). Lookups use anchored
   /// values to cross the static edges above the parent in the same step as this edge.
@@ -80,6 +90,12 @@ class TimeCache {
   bool isTooOld(std::int64_t stamp, std::int64_t cache_time) const {
     return !is_static_ && count_ > 0 && stamp < saturatingSubtract(newest_stamp_, cache_time);
   }
+  /// Whether insert() would refuse a sample at `stamp` as older than every sample of an edge
+  /// holding `most_samples` already.
+  bool isFullAndOlder(std::int64_t stamp, std::size_t most_samples) const {
+    return !is_static_ && count_ > 0 && count_ >= std::max<std::size_t>(most_samples, 2) &&
+           stamp < oldest_stamp_;
+  }
   /// Drops the history of a dynamic edge; a static edge keeps its value.
   void clearHistory();
 
@@ -91,6 +107,8 @@ class TimeCache {
   std::int64_t singleParentFrom() const { return single_parent_from_; }
   std::int64_t newestStamp() const { return newest_stamp_; }
   FrameId newestParent() const { return newest_parent_; }
+  /// The newest sample's value, of a dynamic edge with samples.
+  const Transform& newestTransform() const { return transformAt(count_ - 1); }
 
   /// The samples that give the edge's value at `stamp` (any stamp for a static edge).
   SampleStatus find(std::int64_t stamp, SampleSpan& span) const;
@@ -98,6 +116,15 @@ class TimeCache {
   /// `stamp`, without checking either; from `hint` (prefetch()'s answer) when it holds, and
   /// in the anchored values when `anchored`.
   SampleSpan spanWithin(std::int64_t stamp, std::size_t hint, bool anchored) const;
+  /// The stamps of the two samples `stamp` falls between, when it falls strictly between two.
+  bool samplesAround(std::int64_t stamp, std::int64_t& older, std::int64_t& newer) const {
+    if (is_static_ || count_ < 2 || stamp <= oldest_stamp_ || stamp >= newest_stamp_) return false;
+    const std::size_t index = indexAtOrBefore(stamp);
+    if (stampAt(index) == stamp) return false;
+    older = stampAt(index);
+    newer = stampAt(index + 1);
+    return true;
+  }
   /// The parent at `stamp`, whether or not the edge has data there (then its nearest sample's
   /// parent), with the status find() would give; kNoFrame when the edge is empty.
   FrameId parentAt(std::int64_t stamp, SampleStatus& status) const;
@@ -151,7 +178,11 @@ class TimeCache {
   std::size_t indexAtOrBefore(std::int64_t stamp) const;
   std::size_t searchNear(std::int64_t stamp, std::size_t guess) const;
   std::size_t guessIndex(std::int64_t stamp) const;
-  void grow(std::int64_t cache_time);
+  void grow(std::int64_t cache_time, std::size_t most_samples);
+  void dropOldest() {
+    head_ = (head_ + 1) & mask_;
+    --count_;
+  }
   void noteParentChanges(std::size_t index);
   void refreshEnds();
 

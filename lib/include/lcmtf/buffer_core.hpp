@@ -118,8 +118,22 @@ class BufferCore {
 
   /// Drops all dynamic history; frames, static edges, statistics and requests stay.
   void clear();
+  /// Drops the dynamic history of the edges whose newest sample came from `authority` (a
+  /// sender that restarted, or a log replayed again); returns how many edges it cleared.
+  std::size_t clearAuthority(const std::string& authority);
 
   Duration cacheTime() const;
+  /// At most this many samples are kept per edge, whatever rate a peer sends at: beyond it the
+  /// oldest makes room, and a sample older than all kept is refused (kEdgeFull). The default
+  /// covers the cache time at 1.2 kHz (12,000 samples for 10 s), and at least 64.
+  void setMostSamplesPerEdge(std::size_t most);
+  std::size_t mostSamplesPerEdge() const;
+  /// A lookup at a time between two samples of an edge further apart than `gap` fails with
+  /// InterpolationGapException instead of interpolating across the hole (lost messages, a
+  /// stalled sender). Zero, the default as in tf2, sets no limit. Lookups are slower with a
+  /// limit set.
+  void setMaxInterpolationGap(Duration gap);
+  Duration maxInterpolationGap() const;
   InsertStatistics statistics() const;
   /// Where each first rejection of a kind is reported (default: a line on stderr).
   void setErrorReporter(std::function<void(const std::string& message)> reporter);

@@ -41,6 +41,13 @@ class FutureExtrapolationException : public ExtrapolationException {
   using ExtrapolationException::ExtrapolationException;
 };
 
+/// The requested time falls between two samples of an edge further apart than the buffer's
+/// maximum interpolation gap (BufferCore::setMaxInterpolationGap): data was lost or late there.
+class InterpolationGapException : public ExtrapolationException {
+ public:
+  using ExtrapolationException::ExtrapolationException;
+};
+
 /// An argument that can never be valid: an empty frame name, NaN, a bad quaternion.
 class InvalidArgumentException : public TransformException {
  public:

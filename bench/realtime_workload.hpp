@@ -1,0 +1,147 @@
+#pragma once
+
+// A robot's real-time set-up on one core: a receive thread stores a batch of transforms every
+// millisecond while a control thread looks up for 500 us, then sleeps for 500 us; either of
+// them may run under SCHED_FIFO. Reports the slowest lookup and how many batches got stored.
+#include <pthread.h>
+#include <sched.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "lcmtf/buffer_core.hpp"
+
+namespace lcmtf_bench {
+
+enum class RealtimeThread { kLookups, kReceiver };
+
+struct RealtimeResult {
+  bool permitted = true;  // false: SCHED_FIFO or pinning refused, `why_not` says why
+  std::string why_not;
+  std::uint64_t batches_due = 0;
+  std::uint64_t batches_stored = 0;
+  std::uint64_t lookups = 0;
+  std::chrono::nanoseconds worst_lookup{0};
+};
+
+namespace realtime_detail {
+
+using Clock = std::chrono::steady_clock;
+constexpr int kFrames = 100;
+// How late a batch may be stored: what a receive queue of 100 messages holds at 1 kHz.
+constexpr auto kBacklog = std::chrono::milliseconds(100);
+
+inline std::string frameName(int index) { return "frame_" + std::to_string(index); }
+
+// Frame i hangs under frame (i - 1) / 2: a binary tree 7 levels deep, every edge dynamic.
+inline std::vector<lcmtf::TransformStamped> batchAt(std::int64_t millisecond) {
+  std::vector<lcmtf::TransformStamped> batch;
+  batch.reserve(kFrames - 1);
+  const double t = static_cast<double>(millisecond) * 1e-3;
+  for (int child = 1; child < kFrames; ++child) {
+    lcmtf::Transform value(Eigen::Vector3d(0.1 * child, std::sin(t + child), 0.5),
+                           Eigen::Quaterniond(Eigen::AngleAxisd(0.01 * t * child,
+                                                                Eigen::Vector3d::UnitZ())));
+    batch.push_back(lcmtf::TransformStamped{lcmtf::fromUtime(1'000'000 + millisecond * 1000),
+                                            frameName((child - 1) / 2), frameName(child),
+                                            value});
+  }
+  return batch;
+}
+
+// Moves the calling thread to `cpu` and, when asked, to SCHED_FIFO; "" when both worked.
+inline std::string placeThread(int cpu, bool realtime) {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  CPU_SET(cpu, &set);
+  if (const int error = pthread_setaffinity_np(pthread_self(), sizeof(set), &set)) {
+    return std::string("pinning to one core refused: ") + std::strerror(error);
+  }
+  if (realtime) {
+    sched_param param{};
+    param.sched_priority = 50;
+    if (const int error = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param)) {
+      return std::string("SCHED_FIFO refused: ") + std::strerror(error);
+    }
+  }
+  return "";
+}
+
+}  // namespace realtime_detail
+
+/// Runs the set-up for `duration` with `realtime` under SCHED_FIFO, both threads on the core
+/// the caller runs on.
+inline RealtimeResult runRealtimeWorkload(RealtimeThread realtime, std::chrono::milliseconds duration) {
+  using namespace realtime_detail;
+  RealtimeResult result;
+  lcmtf::BufferCore buffer(std::chrono::seconds(2));
+  buffer.setTransforms(batchAt(0), "receiver");
+  const int cpu = std::max(0, sched_getcpu());
+  std::atomic<bool> refused{false};
+  std::string receiver_problem;
+  std::string lookup_problem;
+  std::atomic<int> ready{0};
+  const Clock::time_point start = Clock::now() + std::chrono::milliseconds(50);
+  const Clock::time_point end = start + duration;
+
+  std::thread receiver([&] {
+    receiver_problem = placeThread(cpu, realtime == RealtimeThread::kReceiver);
+    if (!receiver_problem.empty()) refused = true;
+    ++ready;
+    std::this_thread::sleep_until(start);
+    std::int64_t millisecond = 1;
+    while (!refused) {
+      const Clock::time_point due = start + std::chrono::milliseconds(millisecond);
+      if (due >= end) break;
+      std::this_thread::sleep_until(due);
+      buffer.setTransforms(batchAt(millisecond), "receiver");
+      ++result.batches_stored;
+      ++millisecond;
+      // Batches more than kBacklog late are lost, as LCM drops them from a full queue.
+      while (start + std::chrono::milliseconds(millisecond) + kBacklog < Clock::now()) ++millisecond;
+    }
+  });
+  std::thread control([&] {
+    lookup_problem = placeThread(cpu, realtime == RealtimeThread::kLookups);
+    if (!lookup_problem.empty()) refused = true;
+    ++ready;
+    std::mt19937 random(7);
+    std::uniform_int_distribution<int> frame(0, kFrames - 1);
+    std::vector<lcmtf::FrameHandle> handles;
+    for (int i = 0; i < kFrames; ++i) handles.push_back(buffer.resolveFrame(frameName(i)));
+    lcmtf::TransformStamped out;
+    std::this_thread::sleep_until(start);
+    while (!refused && Clock::now() < end) {
+      const Clock::time_point busy_until = Clock::now() + std::chrono::microseconds(500);
+      while (Clock::now() < busy_until) {
+        const Clock::time_point before = Clock::now();
+        try {
+          buffer.lookupTransform(handles[frame(random)], handles[frame(random)],
+                                 lcmtf::kLatestTime, out);
+        } catch (const lcmtf::TransformException&) {
+        }
+        result.worst_lookup = std::max(result.worst_lookup, Clock::now() - before);
+        ++result.lookups;
+      }
+      std::this_thread::sleep_for(std::chrono::microseconds(500));
+    }
+  });
+  receiver.join();
+  control.join();
+  result.batches_due = static_cast<std::uint64_t>(duration / std::chrono::milliseconds(1)) - 1;
+  if (refused) {
+    result.permitted = false;
+    result.why_not = !receiver_problem.empty() ? receiver_problem : lookup_problem;
+  }
+  return result;
+}
+
+}  // namespace lcmtf_bench
