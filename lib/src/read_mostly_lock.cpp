@@ -5,7 +5,6 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
-#include <climits>
 
 namespace lcmtf::detail {
 
@@ -29,21 +28,38 @@ void sleepWhileEquals(const std::atomic<std::uint32_t>& word, std::uint32_t expe
           nullptr, nullptr, 0);
 }
 
-void wake(const std::atomic<std::uint32_t>& word, int count) {
-  syscall(SYS_futex, reinterpret_cast<const std::uint32_t*>(&word), FUTEX_WAKE_PRIVATE, count,
-          nullptr, nullptr, 0);
+void wakeOne(const std::atomic<std::uint32_t>& word) {
+  syscall(SYS_futex, reinterpret_cast<const std::uint32_t*>(&word), FUTEX_WAKE_PRIVATE, 1, nullptr,
+          nullptr, 0);
 }
 
-// A thread's slot from its identity, with no thread-local storage (which a library loaded by
-// dlopen, as a Python extension is, may not have room for).
-std::size_t slotIndex(std::size_t slots) {
-  const auto self = static_cast<std::uint64_t>(pthread_self());
-  return static_cast<std::size_t>((self * 0x9e3779b97f4a7c15ull) >> 32) % slots;
+// Each thread's slot, handed out in turn. The thread-local takes the general dynamic model,
+// not initial-exec, so the library can be loaded by dlopen (as a Python extension is).
+constexpr std::size_t kNoSlot = static_cast<std::size_t>(-1);
+thread_local std::size_t thread_slot = kNoSlot;
+
+std::size_t threadSlot() {
+  if (thread_slot == kNoSlot) {
+    static std::atomic<std::size_t> next_thread{0};
+    thread_slot = next_thread.fetch_add(1, std::memory_order_relaxed);
+  }
+  return thread_slot;
 }
 
 }  // namespace
 
-ReadMostlyLock::Slot& ReadMostlyLock::mySlot() const { return slots_[slotIndex(kSlots)]; }
+ReadMostlyLock::ReadMostlyLock() {
+  pthread_mutexattr_t attributes;
+  pthread_mutexattr_init(&attributes);
+  // Where the system has no priority inheritance, an ordinary mutex still never spins.
+  pthread_mutexattr_setprotocol(&attributes, PTHREAD_PRIO_INHERIT);
+  if (pthread_mutex_init(&writers_, &attributes) != 0) pthread_mutex_init(&writers_, nullptr);
+  pthread_mutexattr_destroy(&attributes);
+}
+
+ReadMostlyLock::~ReadMostlyLock() { pthread_mutex_destroy(&writers_); }
+
+ReadMostlyLock::Slot& ReadMostlyLock::mySlot() const { return slots_[threadSlot() % kSlots]; }
 
 // Reader and writer each announce themselves, then look for the other, both in the single
 // total order of seq_cst operations: at least one of them sees the other and backs off.
@@ -64,7 +80,7 @@ void ReadMostlyLock::leave(Slot& slot) const {
   if (writing_.load(std::memory_order_seq_cst) != 0 &&
       writer_sleeping_.load(std::memory_order_seq_cst) != 0) {
     reader_left_.fetch_add(1, std::memory_order_seq_cst);
-    wake(reader_left_, 1);
+    wakeOne(reader_left_);
   }
 }
 
@@ -74,15 +90,13 @@ void ReadMostlyLock::waitWhileWriting() const {
     pause();
   }
   while (writing_.load(std::memory_order_seq_cst) != 0) {
-    readers_sleeping_.fetch_add(1, std::memory_order_seq_cst);
-    const std::uint32_t seen = writer_left_.load(std::memory_order_seq_cst);
-    if (writing_.load(std::memory_order_seq_cst) != 0) sleepWhileEquals(writer_left_, seen);
-    readers_sleeping_.fetch_sub(1, std::memory_order_seq_cst);
+    pthread_mutex_lock(&writers_);
+    pthread_mutex_unlock(&writers_);
   }
 }
 
 void ReadMostlyLock::lock() {
-  writers_.lock();
+  pthread_mutex_lock(&writers_);
   writing_.store(1, std::memory_order_seq_cst);
   for (const Slot& slot : slots_) waitUntilEmpty(slot);
 }
@@ -102,9 +116,7 @@ void ReadMostlyLock::waitUntilEmpty(const Slot& slot) {
 
 void ReadMostlyLock::unlock() {
   writing_.store(0, std::memory_order_seq_cst);
-  writer_left_.fetch_add(1, std::memory_order_seq_cst);
-  if (readers_sleeping_.load(std::memory_order_seq_cst) != 0) wake(writer_left_, INT_MAX);
-  writers_.unlock();
+  pthread_mutex_unlock(&writers_);
 }
 
 }  // namespace lcmtf::detail

@@ -4,7 +4,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
-#include <mutex>
+#include <pthread.h>
 
 namespace lcmtf::detail {
 
@@ -14,10 +14,13 @@ namespace lcmtf::detail {
 /// on a mutex), waits until every slot is empty, and has the data to itself.
 ///
 /// Whoever must wait spins briefly, then sleeps in the kernel until the other side wakes it:
-/// a real-time thread never spins on a lower-priority one, which could then never run.
+/// a real-time thread never spins on a lower-priority one, which could then never run. A reader
+/// waits for a writer on the writers' mutex, which inherits priority: the writer then runs at
+/// the waiting reader's priority until it is done.
 class ReadMostlyLock {
  public:
-  ReadMostlyLock() = default;
+  ReadMostlyLock();
+  ~ReadMostlyLock();
   ReadMostlyLock(const ReadMostlyLock&) = delete;
   ReadMostlyLock& operator=(const ReadMostlyLock&) = delete;
 
@@ -40,12 +43,10 @@ class ReadMostlyLock {
   // Read by every reader: on a line of its own, written only when a writer comes and goes.
   alignas(64) std::atomic<std::uint32_t> writing_{0};
   mutable std::atomic<std::uint32_t> writer_sleeping_{0};
-  // Changed then woken: by a writer leaving (readers sleep on it), by a reader leaving while a
-  // writer sleeps (the writer sleeps on it).
-  alignas(64) mutable std::atomic<std::uint32_t> writer_left_{0};
-  mutable std::atomic<std::uint32_t> readers_sleeping_{0};
+  // Changed, then woken, by a reader leaving while the writer sleeps on it.
   alignas(64) mutable std::atomic<std::uint32_t> reader_left_{0};
-  std::mutex writers_;
+  // Held by the writer from lock() to unlock().
+  mutable pthread_mutex_t writers_;
 };
 
 }  // namespace lcmtf::detail
