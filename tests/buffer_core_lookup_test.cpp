@@ -680,21 +680,24 @@ TEST(BufferCoreLookup, OneLeadingSlashIsStrippedFromEveryQuery) {
 }
 
 // A sender without a clock stamps its samples 0, which is also the time that asks for the
-// latest: where the latest common time comes out as 0, each edge gives its newest sample, as
-// in tf2, whether or not the other edges have data at 0.
-TEST(BufferCoreLookup, SamplesStampedZeroAreTakenAtTheirNewestWhereTheCommonTimeIsZero) {
+// latest. As in tf2, such an edge sets no bound on the latest common time, and at time 0 it
+// gives its newest sample.
+TEST(BufferCoreLookup, AnEdgeWhoseNewestSampleIsStampedZeroSetsNoBoundOnTheLatestTime) {
   BufferCore buffer;
   put(buffer, "world", "base", fromUtime(0), pose({1, 0, 0}, 0, kZ));
   put(buffer, "base", "camera", at(5), pose({0, 2, 0}, 0, kZ));
   put(buffer, "base", "camera", at(6), pose({0, 3, 0}, 0, kZ));
-  EXPECT_EQ(buffer.getLatestCommonTime("world", "camera"), fromUtime(0));
-  const TransformStamped world_T_camera = buffer.lookupTransform("world", "camera", kLatestTime);
-  EXPECT_EQ(world_T_camera.stamp, fromUtime(0));
-  EXPECT_TRUE(near(world_T_camera.transform, isometry({1, 3, 0}, 0, kZ), kTolerance));
-  EXPECT_TRUE(buffer.canTransform("world", "camera", kLatestTime));
+  EXPECT_EQ(buffer.getLatestCommonTime("world", "camera"), at(6));
+  EXPECT_THROW(buffer.lookupTransform("world", "camera", kLatestTime), ExtrapolationException);
+  EXPECT_FALSE(buffer.canTransform("world", "camera", kLatestTime));
+  EXPECT_EQ(buffer.getLatestCommonTime("world", "base"), fromUtime(0));
   EXPECT_TRUE(near(buffer.lookupTransform("world", "base", kLatestTime).transform,
                    isometry({1, 0, 0}, 0, kZ), kTolerance));
-  EXPECT_THROW(buffer.lookupTransform("world", "camera", at(5.5)), ExtrapolationException);
+  put(buffer, "base", "arm", fromUtime(-1), pose({0, 0, 1}, 0, kZ));
+  put(buffer, "base", "arm", fromUtime(0), pose({0, 0, 2}, 0, kZ));
+  const TransformStamped world_T_arm = buffer.lookupTransform("world", "arm", kLatestTime);
+  EXPECT_EQ(world_T_arm.stamp, fromUtime(0));
+  EXPECT_TRUE(near(world_T_arm.transform, isometry({1, 0, 2}, 0, kZ), kTolerance));
 }
 
 }  // namespace

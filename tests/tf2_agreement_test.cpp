@@ -208,6 +208,14 @@ class RandomForest {
                           true});
       return;
     }
+    if (kind == 4 && uniform(0, 3) == 0) {
+      // A sender without a clock: one dynamic sample stamped 0, which sets no bound on the
+      // latest common time.
+      samples_.push_back({parent, names_[static_cast<std::size_t>(child)], 0,
+                          Eigen::Vector3d(real(-2, 2), real(-2, 2), real(-2, 2)), randomRotation(),
+                          false, 0});
+      return;
+    }
     // A dynamic edge: samples at its own rate over part or all of the history, turning by up to
     // a quarter turn between samples, and in some edges changing parent once, or twice and
     // back (with `loops`, a loop may then exist over the middle part of the history only).

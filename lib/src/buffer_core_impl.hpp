@@ -22,12 +22,14 @@
 namespace lcmtf {
 
 /// The newest stamp at which every dynamic edge added so far has data, once there is one: the
-/// latest common time of a path (0 when it has no dynamic edge).
+/// latest common time of a path (0 when it has no dynamic edge). As in tf, an edge whose newest
+/// sample is stamped 0 (time 0 also asks for the latest) sets no bound.
 struct CommonNewest {
   std::int64_t stamp = 0;
   bool any_dynamic = false;
 
   void add(std::int64_t newest) {
+    if (newest == 0) return;
     stamp = any_dynamic ? std::min(stamp, newest) : newest;
     any_dynamic = true;
   }

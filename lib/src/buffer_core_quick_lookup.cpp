@@ -139,7 +139,8 @@ bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frame
     for (std::size_t i = 0; i < count; ++i) {
       PlanStep& step = steps[i];
       if (!step.cache) continue;
-      if (at < step.cache->singleParentFrom()) return false;
+      // An edge whose newest sample is stamped 0 sets no bound on `at`, and may lack data there.
+      if (at < step.cache->singleParentFrom() || at > step.cache->newestStamp()) return false;
       step.hint = step.cache->hintNearNewest(at);
     }
   }

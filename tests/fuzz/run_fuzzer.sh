@@ -9,5 +9,9 @@ mkdir -p "$work/corpus" "$work/seeds" "$work/artifacts"
 for seed in "$work/seeds"/*.bin; do
   { printf '\000'; cat "$seed"; } > "$work/corpus/seed-$(basename "$seed")"
 done
+# Inputs that once found a bug run first, as part of the corpus.
+for input in "$(dirname "$0")"/regressions/tf_message-*; do
+  cp "$input" "$work/corpus/"
+done
 exec "$fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
   -artifact_prefix="$work/artifacts/" "$work/corpus"
