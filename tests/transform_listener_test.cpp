@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <thread>
+
 #include "lcmtf/static_transform_broadcaster.hpp"
 #include "lcmtf/transform_broadcaster.hpp"
 #include "support/sample_messages.hpp"
@@ -12,6 +14,8 @@ namespace lcmtf {
 namespace {
 
 using testing::HasSubstr;
+using std::chrono::milliseconds;
+using std::chrono::seconds;
 
 TransformStamped edge(const std::string& parent, const std::string& child, std::int64_t utime,
                       double x = 1.0) {
@@ -22,6 +26,23 @@ TransformStamped edge(const std::string& parent, const std::string& child, std::
 void drain(lcm::LCM& lcm) {
   while (lcm.handleTimeout(0) > 0) {
   }
+}
+
+// A batch as a sender of our own making numbers it, handed to the listener as if received.
+void receive(TransformListener& listener, const std::string& authority, std::int64_t sequence,
+             const std::vector<TransformStamped>& transforms, const std::string& channel) {
+  tf_message_t batch = makeTfMessage(transforms, authority);
+  batch.sequence = sequence;
+  const std::vector<std::uint8_t> bytes = lcmtf_test::encode(batch);
+  listener.handleMessage(bytes.data(), bytes.size(), channel);
+}
+
+AuthorityStatistics statisticsOf(const TransformListener& listener, const std::string& authority) {
+  for (const AuthorityStatistics& statistics : listener.authorityStatistics()) {
+    if (statistics.authority == authority) return statistics;
+  }
+  ADD_FAILURE() << "the listener does not follow '" << authority << "'";
+  return {};
 }
 
 TEST(TransformListener, BroadcastTransformsReachTheBuffer) {
@@ -179,6 +200,229 @@ TEST(TransformListener, SingleStalePacketIsDroppedButASustainedJumpBackResetsHis
   const TransformStamped after = buffer.lookupTransform("odom", "camera", kLatestTime);
   EXPECT_EQ(toUtime(after.stamp), 1'500'000);
   EXPECT_EQ(after.transform.translation.x(), 3.0);
+}
+
+// A made-up sender, four times a second, sends one batch stamped now and three stamped 20 s
+// earlier. Its jump back clears only the edge it sent, once per cache time; the good tree's
+// history and latest lookups never fail meanwhile.
+TEST(TransformListener, ForgedJumpsBackClearOnlyTheForgersEdgesAtMostOncePerCacheTime) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;  // 10 s of history
+  TransformListener listener(buffer, lcm);
+  TransformBroadcaster good(lcm, kTfChannel, "odometry");
+  TransformBroadcaster forger(lcm, kTfChannel, "forger");
+  StaticTransformBroadcaster statics(lcm);
+  statics.sendTransform(edge("base", "camera", 0));
+  const std::int64_t start = toUtime(now());
+  constexpr int kTicks = 125;  // 10 ms apart: five rounds of the forger
+  std::size_t failed_lookups = 0;
+  for (int tick = 0; tick < kTicks; ++tick) {
+    const std::int64_t stamp = start + tick * 10'000;
+    good.sendTransform(edge("odom", "base", stamp, 1.0 + tick));
+    if (tick % 25 == 0) {
+      forger.sendTransform(edge("odom", "forged", stamp));
+      for (int old = 0; old < 3; ++old) forger.sendTransform(edge("odom", "forged", stamp - 20'000'000));
+    }
+    drain(lcm);
+    for (const std::int64_t t : {stamp, start, (start + stamp) / 2}) {
+      if (!buffer.canTransform("camera", "odom", fromUtime(t))) ++failed_lookups;
+    }
+    if (!buffer.canTransform("camera", "odom", kLatestTime)) ++failed_lookups;
+    std::this_thread::sleep_for(milliseconds(10));
+  }
+  EXPECT_EQ(failed_lookups, 0u);
+  EXPECT_EQ(buffer.lookupTransform("odom", "base", fromUtime(start)).transform.translation.x(), 1.0);
+
+  const ListenerStatistics stats = listener.statistics();
+  EXPECT_EQ(stats.history_resets, 1u);
+  EXPECT_EQ(stats.cleared_edges, 1u);
+  EXPECT_EQ(stats.resets_held_back, 4u);  // the third old batch of each later round
+  EXPECT_EQ(stats.stale_batches, 2u + 4u * 3u);
+  const AuthorityStatistics forged = statisticsOf(listener, "forger");
+  EXPECT_EQ(forged.history_resets, 1u);
+  EXPECT_EQ(forged.cleared_edges, 1u);
+  EXPECT_EQ(forged.resets_held_back, 4u);
+  EXPECT_EQ(forged.batches, 20u);
+  const AuthorityStatistics odometry = statisticsOf(listener, "odometry");
+  EXPECT_EQ(odometry.history_resets, 0u);
+  EXPECT_EQ(odometry.stale_batches, 0u);
+  EXPECT_EQ(odometry.batches, static_cast<std::uint64_t>(kTicks));
+}
+
+TEST(TransformListener, ASenderMayResetAgainOnceTheCacheTimeHasPassed) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer(milliseconds(100));
+  std::vector<std::string> reports;
+  ListenerOptions options;
+  options.reporter = [&](const std::string& message) { reports.push_back(message); };
+  TransformListener listener(buffer, lcm, options);
+  TransformBroadcaster replay(lcm, kTfChannel, "replay");
+  const auto playTwice = [&] {
+    for (std::int64_t t = 5'000'000; t <= 5'050'000; t += 10'000) {
+      replay.sendTransform(edge("odom", "base", t));
+    }
+    for (std::int64_t t = 1'000'000; t <= 1'030'000; t += 10'000) {
+      replay.sendTransform(edge("odom", "base", t));
+    }
+    drain(lcm);
+  };
+  playTwice();
+  std::this_thread::sleep_for(milliseconds(150));
+  playTwice();
+  EXPECT_EQ(listener.statistics().history_resets, 2u);
+  EXPECT_EQ(listener.statistics().resets_held_back, 0u);
+  EXPECT_EQ(toUtime(buffer.getLatestCommonTime("odom", "base")), 1'030'000);
+  ASSERT_EQ(reports.size(), 1u) << "one report per sender";
+  EXPECT_THAT(reports[0], HasSubstr("'replay'"));
+  EXPECT_THAT(reports[0], HasSubstr("cleared the dynamic history of the 1 edges it sent last"));
+}
+
+ListenerOptions onMemq() {
+  ListenerOptions options;
+  options.lcm_url = "memq://";
+  return options;
+}
+
+// A log of two senders played twice through one listener, beside a live sender: each sender of
+// the log restarts its own edges; the live one's history stays whole.
+TEST(TransformListener, LogPlayedAgainRestartsEachOfItsSendersAndSparesTheLiveOne) {
+  Buffer buffer(seconds(1));
+  TransformListener listener(buffer, onMemq());
+  std::int64_t live_stamp = 100'000'000;
+  std::size_t live_history_missing = 0;
+  const auto play = [&] {
+    std::int64_t sequence = 0;
+    for (std::int64_t t = 50'000'000; t <= 53'000'000; t += 100'000) {
+      ++sequence;
+      receive(listener, "odometry", sequence, {edge("odom", "base", t, 1.0)}, kTfChannel);
+      receive(listener, "arm", sequence, {edge("base", "hand", t, 2.0)}, kTfChannel);
+      live_stamp += 100'000;
+      receive(listener, "live", live_stamp / 100'000,
+              {edge("world", "drone", live_stamp, 3.0)}, kTfChannel);
+      if (live_stamp > 100'900'000 &&
+          !buffer.canTransform("world", "drone", fromUtime(live_stamp - 900'000))) {
+        ++live_history_missing;
+      }
+    }
+  };
+  play();
+  play();
+  EXPECT_EQ(live_history_missing, 0u);
+  EXPECT_EQ(toUtime(buffer.getLatestCommonTime("odom", "hand")), 53'000'000);
+  const ListenerStatistics stats = listener.statistics();
+  EXPECT_EQ(stats.history_resets, 2u);
+  EXPECT_EQ(stats.cleared_edges, 2u);
+  EXPECT_EQ(stats.stale_batches, 4u);
+  EXPECT_EQ(stats.sequence_restarts, 2u);
+  EXPECT_EQ(stats.lost_batches, 0u);
+  EXPECT_EQ(stats.duplicated_batches, 0u);
+  for (const char* sender : {"odometry", "arm"}) {
+    const AuthorityStatistics replayed = statisticsOf(listener, sender);
+    EXPECT_EQ(replayed.history_resets, 1u) << sender;
+    EXPECT_EQ(replayed.cleared_edges, 1u) << sender;
+    EXPECT_EQ(replayed.sequence_restarts, 1u) << sender;
+  }
+  EXPECT_EQ(statisticsOf(listener, "live").history_resets, 0u);
+}
+
+// 100,000 senders of one batch each: the listener follows at most max_authorities of them,
+// forgets the least recently heard, and stores every batch of the sender it keeps hearing.
+TEST(TransformListener, FloodOfNewAuthorityNamesKeepsTheListenerBoundedAndGoodBatchesStored) {
+  Buffer buffer;
+  ListenerOptions options;
+  options.lcm_url = "memq://";
+  options.max_authorities = 1000;
+  TransformListener listener(buffer, options);
+  constexpr int kFlood = 100'000;
+  constexpr int kGoodEvery = 100;
+  const std::int64_t start = 1'000'000'000;
+  std::int64_t good_sequence = 0;
+  for (int i = 0; i < kFlood; ++i) {
+    const std::int64_t stamp = start + i * 10;
+    receive(listener, "flood_" + std::to_string(i), 1, {edge("map", "flooded", stamp)},
+            kTfChannel);
+    if (i % kGoodEvery == 0) {
+      receive(listener, "odometry", ++good_sequence, {edge("odom", "base", stamp, 1.0)},
+              kTfChannel);
+    }
+  }
+  const ListenerStatistics stats = listener.statistics();
+  EXPECT_EQ(stats.authorities_followed, 1000u);
+  EXPECT_EQ(listener.authorityStatistics().size(), 1000u);
+  EXPECT_EQ(stats.authorities_forgotten, kFlood + 1u - 1000u);
+  EXPECT_EQ(stats.lost_batches, 0u);
+  const AuthorityStatistics odometry = statisticsOf(listener, "odometry");
+  EXPECT_EQ(odometry.batches, static_cast<std::uint64_t>(good_sequence));
+  EXPECT_EQ(odometry.lost_batches, 0u);
+  EXPECT_EQ(stats.messages, kFlood + static_cast<std::uint64_t>(good_sequence));
+  for (std::int64_t k = 0; k < good_sequence; k += 37) {
+    const std::int64_t stamp = start + k * kGoodEvery * 10;
+    EXPECT_EQ(toUtime(buffer.lookupTransform("odom", "base", fromUtime(stamp)).stamp), stamp);
+  }
+}
+
+// Per sender and channel: 1 2 5 4 4 6 loses 3 and 4, gets 4 back late, then 4 again.
+TEST(TransformListener, SequenceGapsReordersAndDuplicatesAreCountedPerAuthorityAndChannel) {
+  Buffer buffer;
+  TransformListener listener(buffer, onMemq());
+  std::int64_t stamp = 1'000'000;
+  const auto send = [&](const std::string& authority, std::int64_t sequence,
+                        const std::string& channel) {
+    stamp += 1000;
+    const bool dynamic = channel == kTfChannel;
+    receive(listener, authority, sequence,
+            {edge(authority, authority + (dynamic ? "_moving" : "_mounted"), dynamic ? stamp : 0)},
+            channel);
+  };
+  for (std::int64_t n : {1, 2, 5, 4, 4, 6}) send("arm", n, kTfChannel);
+  for (std::int64_t n : {1, 2, 3}) send("arm", n, kTfStaticChannel);  // numbered apart
+  for (std::int64_t n : {10, 11, 13, 12, 14, 20}) send("base", n, kTfChannel);  // joined late
+  for (std::int64_t n : {0, 0, 0}) send("legacy", n, kTfChannel);               // not numbered
+  for (std::int64_t n : {40, 41, 1, 2, 4}) send("restarted", n, kTfChannel);
+
+  const AuthorityStatistics arm = statisticsOf(listener, "arm");
+  EXPECT_EQ(arm.batches, 9u);
+  EXPECT_EQ(arm.lost_batches, 1u);
+  EXPECT_EQ(arm.reordered_batches, 1u);
+  EXPECT_EQ(arm.duplicated_batches, 1u);
+  EXPECT_EQ(arm.sequence_restarts, 0u);
+  const AuthorityStatistics base = statisticsOf(listener, "base");
+  EXPECT_EQ(base.lost_batches, 5u);
+  EXPECT_EQ(base.reordered_batches, 1u);
+  EXPECT_EQ(base.duplicated_batches, 0u);
+  const AuthorityStatistics legacy = statisticsOf(listener, "legacy");
+  EXPECT_EQ(legacy.lost_batches + legacy.reordered_batches + legacy.duplicated_batches, 0u);
+  const AuthorityStatistics restarted = statisticsOf(listener, "restarted");
+  EXPECT_EQ(restarted.sequence_restarts, 1u);
+  EXPECT_EQ(restarted.lost_batches, 1u);
+
+  const ListenerStatistics stats = listener.statistics();
+  EXPECT_EQ(stats.lost_batches, 7u);
+  EXPECT_EQ(stats.reordered_batches, 2u);
+  EXPECT_EQ(stats.duplicated_batches, 1u);
+  EXPECT_EQ(stats.sequence_restarts, 1u);
+  EXPECT_EQ(listener.authorityStatistics().front().authority, "restarted");  // heard last
+}
+
+TEST(TransformListener, BroadcastBatchesArriveNumberedWithNothingLost) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;
+  TransformListener listener(buffer, lcm);
+  TransformBroadcaster first(lcm, kTfChannel, "shared_name");
+  TransformBroadcaster second(lcm, kTfChannel, "shared_name");  // one stream with the first
+  StaticBroadcasterOptions static_options;
+  static_options.authority = "shared_name";
+  StaticTransformBroadcaster statics(lcm, static_options);
+  for (int i = 1; i <= 10; ++i) {
+    (i % 2 ? first : second).sendTransform(edge("odom", "base", i * 1000));
+    statics.sendTransform(edge("base", "camera_" + std::to_string(i), 0));
+  }
+  drain(lcm);
+  const AuthorityStatistics shared = statisticsOf(listener, "shared_name");
+  EXPECT_GE(shared.batches, 20u);
+  EXPECT_EQ(shared.lost_batches + shared.reordered_batches + shared.duplicated_batches +
+                shared.sequence_restarts,
+            0u);
 }
 
 TEST(TransformListener, OwnThreadModeListensOnItsOwnLcm) {

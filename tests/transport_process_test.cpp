@@ -494,7 +494,8 @@ std::vector<std::uint8_t> batchClaiming(std::int32_t count) {
   const tf_message_t batch = makeTfMessage(
       {TransformStamped{fromUtime(5'000'000), "map", "claimed", Transform::identity()}}, "liar");
   std::vector<std::uint8_t> bytes = lcmtf_test::encode(batch);
-  putInt32(bytes, 8 + 8 + 4 + batch.authority.size() + 1, count);  // after hash, utime, authority
+  // after the hash, utime, authority and sequence
+  putInt32(bytes, 8 + 8 + 4 + batch.authority.size() + 1 + 8, count);
   return bytes;
 }
 

@@ -21,10 +21,13 @@ void putInt32(std::vector<std::uint8_t>& bytes, std::size_t offset, std::int32_t
   }
 }
 
-// Where num_transforms sits in an encoded tf_message_t: fingerprint, utime, authority string.
-std::size_t countOffset(const tf_message_t& message) {
+// Where sequence sits in an encoded tf_message_t: after the fingerprint, utime, authority string.
+std::size_t sequenceOffset(const tf_message_t& message) {
   return 8 + 8 + 4 + message.authority.size() + 1;
 }
+
+// Where num_transforms sits: after the sequence.
+std::size_t countOffset(const tf_message_t& message) { return sequenceOffset(message) + 8; }
 
 template <class Message>
 std::string decodeError(const std::vector<std::uint8_t>& bytes, const DecodeLimits& limits = {}) {
@@ -131,7 +134,7 @@ TEST(WireDecode, StringLengthZeroOrNegativeIsRejected) {
 TEST(WireDecode, StringWithoutTerminatorOrWithInnerNulIsRejected) {
   const tf_message_t message = lcmtf_test::sampleTfMessage(1);
   std::vector<std::uint8_t> bytes = encode(message);
-  bytes[countOffset(message) - 1] = 'x';
+  bytes[sequenceOffset(message) - 1] = 'x';
   EXPECT_EQ(decodeError<tf_message_t>(bytes),
             "tf_message_t: authority: string is not NUL-terminated");
 
@@ -161,7 +164,7 @@ TEST(WireDecode, TrailingBytesAreRejected) {
 TEST(WireDecode, FailedDecodeOfJointStateNamesPositionCount) {
   joint_state_t state = lcmtf_test::sampleJointState();
   std::vector<std::uint8_t> bytes = encode(state);
-  std::size_t offset = 8 + 8 + 4;
+  std::size_t offset = 8 + 8 + (4 + state.authority.size() + 1) + 8 + 4;
   for (const std::string& name : state.name) offset += 4 + name.size() + 1;
   putInt32(bytes, offset, 1000);
   EXPECT_THAT(decodeError<joint_state_t>(bytes),

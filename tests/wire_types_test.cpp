@@ -78,8 +78,8 @@ TEST(WireTypes, SixtyTransformBatchFitsOneDatagram) {
 // make such a change deliberate.
 TEST(WireTypes, FingerprintsAreStable) {
   EXPECT_EQ(static_cast<std::uint64_t>(transform_t::getHash()), 0x7f66103c6461dcbcull);
-  EXPECT_EQ(static_cast<std::uint64_t>(tf_message_t::getHash()), 0x5816e4b00d162f82ull);
-  EXPECT_EQ(static_cast<std::uint64_t>(joint_state_t::getHash()), 0x1686b27968b7e5fcull);
+  EXPECT_EQ(static_cast<std::uint64_t>(tf_message_t::getHash()), 0x06e6a51c6ce8553aull);
+  EXPECT_EQ(static_cast<std::uint64_t>(joint_state_t::getHash()), 0xd1c28c65bafca4abull);
   EXPECT_EQ(static_cast<std::uint64_t>(resend_request_t::getHash()), 0x9a59296425c71ef0ull);
   EXPECT_EQ(static_cast<std::uint64_t>(robot_description_t::getHash()), 0xfe4bc05125116998ull);
 }

@@ -19,7 +19,8 @@ constexpr int kMaxBatchBytes = 60000;
 StaticTransformBroadcaster::StaticTransformBroadcaster(StaticBroadcasterOptions options)
     : options_(std::move(options)),
       owned_lcm_(detail::openLcm(options_.lcm_url)),
-      lcm_(*owned_lcm_) {
+      lcm_(*owned_lcm_),
+      numbering_(options_.channel, options_.authority) {
   subscription_ =
       lcm_.subscribe(options_.request_channel, &StaticTransformBroadcaster::onRequest, this);
   thread_ = std::thread([this] { run(); });
@@ -27,7 +28,7 @@ StaticTransformBroadcaster::StaticTransformBroadcaster(StaticBroadcasterOptions 
 
 StaticTransformBroadcaster::StaticTransformBroadcaster(lcm::LCM& lcm,
                                                        StaticBroadcasterOptions options)
-    : options_(std::move(options)), lcm_(lcm) {
+    : options_(std::move(options)), lcm_(lcm), numbering_(options_.channel, options_.authority) {
   subscription_ =
       lcm_.subscribe(options_.request_channel, &StaticTransformBroadcaster::onRequest, this);
 }
@@ -58,6 +59,7 @@ std::size_t StaticTransformBroadcaster::size() const {
 }
 
 bool StaticTransformBroadcaster::publishAll() {
+  const std::lock_guard<std::mutex> publishing(publish_mutex_);
   std::vector<tf_message_t> batches;
   {
     std::lock_guard<std::mutex> guard(mutex_);
@@ -78,7 +80,8 @@ bool StaticTransformBroadcaster::publishAll() {
     }
   }
   bool published = true;
-  for (const tf_message_t& batch : batches) {
+  for (tf_message_t& batch : batches) {
+    batch.sequence = numbering_.next();
     published = lcm_.publish(options_.channel, &batch) == 0 && published;
   }
   return published;

@@ -22,21 +22,26 @@ tf_message_t makeTfMessage(const std::vector<TransformStamped>& transforms,
 
 TransformBroadcaster::TransformBroadcaster(lcm::LCM& lcm, std::string channel,
                                            std::string authority)
-    : lcm_(lcm), channel_(std::move(channel)), authority_(std::move(authority)) {}
+    : lcm_(lcm),
+      channel_(std::move(channel)),
+      authority_(std::move(authority)),
+      numbering_(channel_, authority_) {}
 
 TransformBroadcaster::TransformBroadcaster(const std::string& lcm_url, std::string channel,
                                            std::string authority)
     : owned_lcm_(detail::openLcm(lcm_url)),
       lcm_(*owned_lcm_),
       channel_(std::move(channel)),
-      authority_(std::move(authority)) {}
+      authority_(std::move(authority)),
+      numbering_(channel_, authority_) {}
 
 bool TransformBroadcaster::sendTransform(const TransformStamped& transform) {
   return sendTransform(std::vector<TransformStamped>{transform});
 }
 
 bool TransformBroadcaster::sendTransform(const std::vector<TransformStamped>& transforms) {
-  const tf_message_t message = makeTfMessage(transforms, authority_);
+  tf_message_t message = makeTfMessage(transforms, authority_);
+  message.sequence = numbering_.next();
   return lcm_.publish(channel_, &message) == 0;
 }
 

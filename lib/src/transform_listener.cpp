@@ -7,6 +7,7 @@
 
 #include "lcmtf/message_conversions.hpp"
 #include "lcmtf/printable.hpp"
+#include "listener_authorities.hpp"
 #include "open_lcm.hpp"
 
 namespace lcmtf {
@@ -16,6 +17,9 @@ namespace {
 // Batches in a row, from one authority, older than the cache time behind its newest, that
 // make the listener take the jump back as a restart (a log replayed again) and start afresh.
 constexpr int kStaleBatchesBeforeReset = 3;
+
+// Senders whose first reset is reported; later ones are only counted.
+constexpr std::size_t kResetsReported = 10;
 
 // a - b clamped to the int64 range: stamps from the network may be anything.
 std::int64_t saturatingSubtract(std::int64_t a, std::int64_t b) {
@@ -31,7 +35,8 @@ TransformListener::TransformListener(Buffer& buffer, ListenerOptions options)
     : buffer_(buffer),
       options_(std::move(options)),
       owned_lcm_(detail::openLcm(options_.lcm_url)),
-      lcm_(*owned_lcm_) {
+      lcm_(*owned_lcm_),
+      authorities_(std::make_unique<detail::ListenerAuthorities>(options_.max_authorities)) {
   subscribe();
   thread_ = std::thread([this] {
     while (!stopping_) lcm_.handleTimeout(50);
@@ -39,7 +44,10 @@ TransformListener::TransformListener(Buffer& buffer, ListenerOptions options)
 }
 
 TransformListener::TransformListener(Buffer& buffer, lcm::LCM& lcm, ListenerOptions options)
-    : buffer_(buffer), options_(std::move(options)), lcm_(lcm) {
+    : buffer_(buffer),
+      options_(std::move(options)),
+      lcm_(lcm),
+      authorities_(std::make_unique<detail::ListenerAuthorities>(options_.max_authorities)) {
   if (!lcm_.good()) throw std::runtime_error("TransformListener: the LCM given is not usable");
   subscribe();
 }
@@ -70,7 +78,25 @@ void TransformListener::requestStatics() {
 
 ListenerStatistics TransformListener::statistics() const {
   std::lock_guard<std::mutex> guard(mutex_);
-  return statistics_;
+  ListenerStatistics statistics = statistics_;
+  statistics.authorities_followed = authorities_->size();
+  return statistics;
+}
+
+std::vector<AuthorityStatistics> TransformListener::authorityStatistics() const {
+  std::lock_guard<std::mutex> guard(mutex_);
+  std::vector<AuthorityStatistics> all;
+  all.reserve(authorities_->size());
+  for (const detail::HeardAuthority& heard : authorities_->byRecency()) {
+    AuthorityStatistics statistics = heard.statistics;
+    const SequenceCounts counts = heard.sequenceCounts();
+    statistics.lost_batches = counts.lost;
+    statistics.reordered_batches = counts.reordered;
+    statistics.duplicated_batches = counts.duplicated;
+    statistics.sequence_restarts = counts.restarts;
+    all.push_back(std::move(statistics));
+  }
+  return all;
 }
 
 void TransformListener::report(const std::string& kind, const std::string& message) {
@@ -128,37 +154,78 @@ std::int64_t TransformListener::newestStored(const tf_message_t& batch) const {
   return newest;
 }
 
-bool TransformListener::isStale(const tf_message_t& batch) {
+detail::HeardAuthority& TransformListener::hear(const tf_message_t& batch, bool is_static) {
+  bool forgot_one = false;
+  detail::HeardAuthority& sender = authorities_->hear(batch.authority, forgot_one);
+  if (forgot_one) ++statistics_.authorities_forgotten;
+  ++sender.statistics.batches;
+  SequenceTracker& sequence = is_static ? sender.static_sequence : sender.dynamic_sequence;
+  const SequenceCounts before = sequence.counts();
+  sequence.observe(batch.sequence);
+  const SequenceCounts& after = sequence.counts();
+  // Unsigned differences wrap, so a loss taken back (the batch came late) subtracts exactly.
+  statistics_.lost_batches += after.lost - before.lost;
+  statistics_.reordered_batches += after.reordered - before.reordered;
+  statistics_.duplicated_batches += after.duplicated - before.duplicated;
+  statistics_.sequence_restarts += after.restarts - before.restarts;
+  return sender;
+}
+
+bool TransformListener::isStale(const tf_message_t& batch, detail::HeardAuthority& sender) {
   if (batch.transforms.empty()) return false;
   std::int64_t batch_newest = std::numeric_limits<std::int64_t>::min();
   for (const transform_t& t : batch.transforms) batch_newest = std::max(batch_newest, t.utime);
-  const std::int64_t cache_time = buffer_.cacheTime().count();
-  auto seen = newest_by_authority_.find(batch.authority);
-  if (seen == newest_by_authority_.end()) {
-    // A listener that has tracked nobody yet may feed a buffer fed before (a log replayed again
+  if (!sender.newest) {
+    // The first sender a listener hears may feed a buffer fed before (a log replayed again
     // through a new LCM and listener): what the buffer holds on these edges counts as newest.
-    const std::int64_t stored = newest_by_authority_.empty()
-                                    ? newestStored(batch)
-                                    : std::numeric_limits<std::int64_t>::min();
-    seen = newest_by_authority_.emplace(batch.authority, std::max(batch_newest, stored)).first;
+    sender.newest = heard_dynamic_ ? batch_newest : std::max(batch_newest, newestStored(batch));
+    heard_dynamic_ = true;
   }
-  if (batch_newest >= saturatingSubtract(seen->second, cache_time)) {
-    seen->second = std::max(seen->second, batch_newest);
-    stale_in_a_row_[batch.authority] = 0;
+  const std::int64_t cache_time = buffer_.cacheTime().count();
+  if (batch_newest >= saturatingSubtract(*sender.newest, cache_time)) {
+    sender.newest = std::max(*sender.newest, batch_newest);
+    sender.stale_in_a_row = 0;
     return false;
   }
-  if (++stale_in_a_row_[batch.authority] < kStaleBatchesBeforeReset) {
+  ++sender.stale_in_a_row;
+  const auto now_steady = std::chrono::steady_clock::now();
+  const bool reset_lately =
+      sender.last_reset && now_steady - *sender.last_reset < buffer_.cacheTime();
+  if (sender.stale_in_a_row < kStaleBatchesBeforeReset || reset_lately) {
     ++statistics_.stale_batches;
+    ++sender.statistics.stale_batches;
+    if (sender.stale_in_a_row >= kStaleBatchesBeforeReset) {
+      ++statistics_.resets_held_back;
+      ++sender.statistics.resets_held_back;
+    }
     return true;
   }
-  buffer_.clear();
-  newest_by_authority_.clear();
-  stale_in_a_row_.clear();
-  newest_by_authority_[batch.authority] = batch_newest;
-  ++statistics_.history_resets;
-  report("reset", "time jumped back by more than the cache time on '" + batch.authority +
-                      "' (a log restarted?): dynamic history cleared, static transforms kept");
+  sender.last_reset = now_steady;
+  restartHistory(batch, batch_newest, sender);
   return false;
+}
+
+void TransformListener::restartHistory(const tf_message_t& batch, std::int64_t batch_newest,
+                                       detail::HeardAuthority& sender) {
+  const std::size_t cleared = buffer_.clearAuthority(batch.authority);
+  sender.newest = batch_newest;
+  sender.stale_in_a_row = 0;
+  sender.dynamic_sequence.restart();
+  sender.dynamic_sequence.observe(batch.sequence);
+  ++statistics_.history_resets;
+  ++sender.statistics.history_resets;
+  statistics_.cleared_edges += cleared;
+  sender.statistics.cleared_edges += cleared;
+  if (sender.reset_reported || resets_reported_ >= kResetsReported || !options_.reporter) return;
+  sender.reset_reported = true;
+  ++resets_reported_;
+  options_.reporter(printable(
+      "time jumped back by more than the cache time on '" + batch.authority +
+      "' (restarted, or a log played again?): cleared the dynamic history of the " +
+      std::to_string(cleared) + " edges it sent last; static transforms and other senders' " +
+      "edges kept" +
+      (resets_reported_ == kResetsReported ? " (later resets of other senders are only counted)"
+                                           : "")));
 }
 
 void TransformListener::handleBatch(const tf_message_t& batch, bool is_static) {
@@ -169,7 +236,8 @@ void TransformListener::handleBatch(const tf_message_t& batch, bool is_static) {
                                "', which is not among the allowed authorities");
     return;
   }
-  if (!is_static && isStale(batch)) return;
+  detail::HeardAuthority& sender = hear(batch, is_static);
+  if (!is_static && isStale(batch, sender)) return;
   // Frames this batch would add, so that the limit holds for the batch as a whole.
   std::size_t frames = buffer_.frameCount();
   std::set<std::string> added;

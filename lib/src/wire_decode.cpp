@@ -129,7 +129,7 @@ bool skimBody(WireSkimmer& wire, const transform_t*) { return skimTransform(wire
 
 bool skimBody(WireSkimmer& wire, const tf_message_t*) {
   std::int32_t count = 0;
-  if (!(wire.skip(8, "utime") && wire.skipName("authority") &&
+  if (!(wire.skip(8, "utime") && wire.skipName("authority") && wire.skip(8, "sequence") &&
         wire.readCount(count, "num_transforms", kShortestTransform))) {
     return false;
   }
@@ -149,7 +149,8 @@ bool skimDoubles(WireSkimmer& wire, const char* count_field, const char* values_
 
 bool skimBody(WireSkimmer& wire, const joint_state_t*) {
   std::int32_t joints = 0;
-  if (!(wire.skip(8, "utime") && wire.readCount(joints, "num_joints", kShortestString))) {
+  if (!(wire.skip(8, "utime") && wire.skipName("authority") && wire.skip(8, "sequence") &&
+        wire.readCount(joints, "num_joints", kShortestString))) {
     return false;
   }
   for (std::int32_t i = 0; i < joints; ++i) {

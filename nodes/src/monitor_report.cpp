@@ -107,6 +107,24 @@ void writeAuthorities(std::ostream& out, const TrafficSummary& summary) {
   out << "Authorities:\n" << table.render() << '\n';
 }
 
+// Only senders whose numbered batches did not all arrive once and in order.
+void writeSequenceTrouble(std::ostream& out, const TrafficSummary& summary) {
+  TextTable table({"authority", "lost", "reordered", "duplicated", "restarts"},
+                  {false, true, true, true, true});
+  bool any = false;
+  for (const AuthorityTraffic& authority : summary.authorities) {
+    const SequenceCounts& counts = authority.sequence;
+    if (!counts.lost && !counts.reordered && !counts.duplicated && !counts.restarts) continue;
+    any = true;
+    table.addRow({authority.authority, std::to_string(counts.lost),
+                  std::to_string(counts.reordered), std::to_string(counts.duplicated),
+                  std::to_string(counts.restarts)});
+  }
+  if (!any) return;
+  out << "Batches lost, reordered or duplicated on the way (by their numbers, since start):\n"
+      << table.render() << '\n';
+}
+
 }  // namespace
 
 std::string formatMonitorReport(const TrafficSummary& summary, const std::string& source,
@@ -123,6 +141,7 @@ std::string formatMonitorReport(const TrafficSummary& summary, const std::string
   } else {
     writeFrames(out, summary, chain);
     writeAuthorities(out, summary);
+    writeSequenceTrouble(out, summary);
   }
   if (!summary.conflicts.empty()) {
     out << "Conflicts (a frame sent by more than one authority):\n";

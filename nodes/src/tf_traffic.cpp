@@ -96,10 +96,12 @@ void TfTraffic::record(const tf_message_t& batch, bool is_static, TimePoint rece
     }
     sender =
         sender_ids_.emplace(batch.authority, static_cast<std::uint32_t>(senders_.size())).first;
-    senders_.push_back(Sender{batch.authority, {}});
+    senders_.push_back(Sender{batch.authority, {}, {}, {}});
   }
   const std::int64_t received_utime = toUtime(received);
-  senders_[sender->second].batches_received.push_back(received_utime);
+  Sender& from = senders_[sender->second];
+  from.batches_received.push_back(received_utime);
+  (is_static ? from.static_sequence : from.dynamic_sequence).observe(batch.sequence);
   for (const transform_t& transform : batch.transforms) {
     if (!validate(transform, batch.authority)) continue;
     const std::string parent = bareName(transform.parent_frame);
@@ -231,6 +233,8 @@ AuthorityTraffic TfTraffic::summarizeSender(std::uint32_t id, std::int64_t start
     last = received;
   }
   summary.rate_hz = ratePerSecond(summary.messages, first, last);
+  summary.sequence = senders_[id].dynamic_sequence.counts();
+  summary.sequence += senders_[id].static_sequence.counts();
   if (const auto delays = tally.delays_by_sender.find(id); delays != tally.delays_by_sender.end()) {
     summary.dynamic_samples = delays->second.count;
     summary.average_delay_s = delays->second.average();

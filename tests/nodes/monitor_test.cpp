@@ -139,6 +139,35 @@ TEST(MonitorCommandLine, BadArgumentsAreNamed) {
   EXPECT_EQ(parse({"--continuous=maybe"}).status, std::optional<int>(kExitBadArguments));
 }
 
+TEST(MonitorReport, BatchesLostReorderedOrDuplicatedAreListedPerAuthority) {
+  TfTraffic traffic;
+  const auto sendNumbered = [&](const std::string& authority, std::int64_t sequence,
+                                bool is_static) {
+    tf_message_t batch =
+        wireBatch(authority, {wireTransform(authority, authority + "_child", kStart)});
+    batch.sequence = sequence;
+    traffic.record(batch, is_static, kStart + milliseconds(sequence));
+  };
+  for (std::int64_t n : {1, 2, 3, 6, 5, 5}) sendNumbered("driver", n, false);
+  for (std::int64_t n : {1, 2, 3}) sendNumbered("driver", n, true);  // numbered apart
+  for (std::int64_t n : {1, 2, 3, 4}) sendNumbered("arm", n, false);
+  for (std::int64_t n : {300, 301, 1, 2}) sendNumbered("replay", n, false);
+  const std::string report = formatMonitorReport(
+      traffic.summarize(kStart, kStart + std::chrono::seconds(1), std::chrono::seconds(10)), "TF",
+      nullptr);
+  EXPECT_THAT(report,
+              HasSubstr("Batches lost, reordered or duplicated on the way (by their numbers, "
+                        "since start):\n"
+                        "  authority  lost  reordered  duplicated  restarts\n"
+                        "  driver        1          1           1         0\n"
+                        "  replay        0          0           0         1\n"));
+  EXPECT_THAT(report.substr(report.find("Batches lost")), Not(HasSubstr("arm")));
+}
+
+TEST(MonitorReport, NothingLostSaysNothingOfNumbers) {
+  EXPECT_THAT(formatMonitorReport(robotSummary(), "TF", nullptr), Not(HasSubstr("Batches lost")));
+}
+
 TEST(Monitor, NothingHeardIsReportedAndExitsOne) {
   std::ostringstream out, err;
   const std::atomic<bool> stop{false};

@@ -21,6 +21,7 @@ public class SpyDecodesLcmtf {
     EXPECTED.put("tf_message_t", new Object[] {
         "utime", 1700000000000001L,
         "authority", "spy_sample@host:42",
+        "sequence", 17L,
         "num_transforms", 2,
         "transforms[0].child_frame", "base_link",
         "transforms[1].parent_frame", "base_link",
@@ -35,6 +36,8 @@ public class SpyDecodesLcmtf {
         "rotation.z", 0.6});
     EXPECTED.put("joint_state_t", new Object[] {
         "utime", 1700000000000005L,
+        "authority", "spy_sample@host:44",
+        "sequence", 18L,
         "num_joints", 3,
         "name[0]", "shoulder_pan",
         "name[2]", "wrist_roll",

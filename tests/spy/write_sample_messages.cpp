@@ -60,6 +60,7 @@ int main(int argc, char** argv) {
   lcmtf::tf_message_t tf;
   tf.utime = 1700000000000001;
   tf.authority = "spy_sample@host:42";
+  tf.sequence = 17;
   tf.transforms = {makeTransform(1700000000000002, "world", "base_link", 1.5),
                    makeTransform(1700000000000003, "base_link", "camera_optical", 0.125)};
   tf.num_transforms = static_cast<std::int32_t>(tf.transforms.size());
@@ -68,6 +69,8 @@ int main(int argc, char** argv) {
 
   lcmtf::joint_state_t joints;
   joints.utime = 1700000000000005;
+  joints.authority = "spy_sample@host:44";
+  joints.sequence = 18;
   joints.name = {"shoulder_pan", "elbow", "wrist_roll"};
   joints.position = {0.5, -1.25, 3.0};
   joints.velocity = {0.1, 0.2, -0.3};

@@ -24,6 +24,7 @@ lcmtf::tf_message_t sampleTfMessage(int transforms) {
   lcmtf::tf_message_t message;
   message.utime = 1'700'000'000'500'000;
   message.authority = "sample_broadcaster@host:4242";
+  message.sequence = 4'000'000'017;
   for (int i = 0; i < transforms; ++i) message.transforms.push_back(sampleTransform(i));
   message.num_transforms = transforms;
   return message;
@@ -32,6 +33,8 @@ lcmtf::tf_message_t sampleTfMessage(int transforms) {
 lcmtf::joint_state_t sampleJointState() {
   lcmtf::joint_state_t state;
   state.utime = 1'700'000'000'250'000;
+  state.authority = "sample_driver@host:4343";
+  state.sequence = 5'000'000'019;
   state.name = {"shoulder", "elbow", "wrist"};
   state.num_joints = 3;
   state.position = {0.5, -1.25, 3.0};
@@ -75,6 +78,7 @@ void expectEqual(const lcmtf::transform_t& actual, const lcmtf::transform_t& exp
 void expectEqual(const lcmtf::tf_message_t& actual, const lcmtf::tf_message_t& expected) {
   EXPECT_EQ(actual.utime, expected.utime);
   EXPECT_EQ(actual.authority, expected.authority);
+  EXPECT_EQ(actual.sequence, expected.sequence);
   EXPECT_EQ(actual.num_transforms, expected.num_transforms);
   ASSERT_EQ(actual.transforms.size(), expected.transforms.size());
   for (std::size_t i = 0; i < actual.transforms.size(); ++i) {
@@ -85,6 +89,8 @@ void expectEqual(const lcmtf::tf_message_t& actual, const lcmtf::tf_message_t& e
 
 void expectEqual(const lcmtf::joint_state_t& actual, const lcmtf::joint_state_t& expected) {
   EXPECT_EQ(actual.utime, expected.utime);
+  EXPECT_EQ(actual.authority, expected.authority);
+  EXPECT_EQ(actual.sequence, expected.sequence);
   EXPECT_EQ(actual.num_joints, expected.num_joints);
   EXPECT_EQ(actual.name, expected.name);
   EXPECT_EQ(actual.num_positions, expected.num_positions);

@@ -125,6 +125,33 @@ TEST_F(UrdfPublisherTest, EachJointStateBecomesOneBatchOnTf) {
   EXPECT_EQ(publisher.publishFailures(), 0u);
 }
 
+// Two drivers number their joint states apart; those that never came are counted, and the
+// batches on TF go out numbered one after another.
+TEST_F(UrdfPublisherTest, JointStatesThatNeverCameAreCountedPerSenderAndBatchesAreNumbered) {
+  UrdfPublisher publisher(lcm_, robot_, options());
+  const auto publish = [&](const std::string& authority, std::int64_t sequence,
+                           const std::string& joint) {
+    joint_state_t state = jointState(kStamp + sequence, {{joint, 0.1}});
+    state.authority = authority;
+    state.sequence = sequence;
+    lcm_.publish(kJointStatesChannel, &state);
+  };
+  for (std::int64_t n : {1, 2, 5, 6, 4}) publish("arm_driver", n, "elbow_joint");
+  for (std::int64_t n : {1, 2, 2, 3}) publish("gripper_driver", n, "gripper_left_finger_joint");
+  handleAll();
+  EXPECT_EQ(publisher.statistics().lost, 1u);
+  EXPECT_EQ(publisher.statistics().reordered, 1u);
+  EXPECT_EQ(publisher.statistics().duplicated, 1u);
+  EXPECT_THAT(describe(publisher.statistics()),
+              HasSubstr("1 lost on the way (numbers skipped); 1 came out of order; 1 came twice"));
+  ASSERT_EQ(tf_.messages.size(), 9u);
+  for (std::size_t k = 0; k < tf_.messages.size(); ++k) {
+    EXPECT_EQ(tf_.messages[k].sequence, static_cast<std::int64_t>(k + 1));
+  }
+  ASSERT_FALSE(statics_.messages.empty());
+  EXPECT_EQ(statics_.messages[0].sequence, 1);
+}
+
 TEST_F(UrdfPublisherTest, BadJointStatesOnTheNetworkAreCountedAndReported) {
   UrdfPublisher publisher(lcm_, robot_, options());
   const std::vector<std::uint8_t> garbage(40, 0xab);

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "command_line_helpers.hpp"
+#include "lcmtf/batch_numbering.hpp"
 #include "format_number.hpp"
 #include "lcmtf_urdf/stop_signal.hpp"
 #include "program_helpers.hpp"
@@ -129,10 +130,12 @@ int runJointPublisher(const JointPublisherConfig& config, const std::atomic<bool
   auto next = start;
   std::uint64_t published = 0;
   std::uint64_t failed = 0;
+  BatchNumbering numbering(config.channel, config.authority);
   while (!stop && (config.duration <= 0.0 || std::chrono::steady_clock::now() < end)) {
     const auto elapsed = std::chrono::steady_clock::now() - start;
-    const joint_state_t state =
-        generator->stateAt(std::chrono::duration<double>(elapsed).count(), now());
+    joint_state_t state = generator->stateAt(std::chrono::duration<double>(elapsed).count(), now());
+    state.authority = config.authority;
+    state.sequence = numbering.next();
     (lcm->publish(config.channel, &state) == 0 ? published : failed) += 1;
     next += period;
     const auto now_steady = std::chrono::steady_clock::now();

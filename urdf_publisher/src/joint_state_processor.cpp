@@ -4,6 +4,7 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "joint_state_senders.hpp"
 #include "lcmtf_urdf/joint_motion.hpp"
 #include "once_reporter.hpp"
 #include "publish_schedule.hpp"
@@ -105,7 +106,7 @@ class JointStateProcessor::Impl {
     batch_.authority = options.authority;
   }
 
-  const tf_message_t* process(const void* data, std::size_t size, TimePoint arrival) {
+  tf_message_t* process(const void* data, std::size_t size, TimePoint arrival) {
     const DecodeResult decoded = decodeMessage(data, size, decoded_, options.limits);
     if (!decoded.ok) {
       ++statistics.received;
@@ -117,8 +118,12 @@ class JointStateProcessor::Impl {
     return process(decoded_, arrival);
   }
 
-  const tf_message_t* process(const joint_state_t& state, TimePoint arrival) {
+  tf_message_t* process(const joint_state_t& state, TimePoint arrival) {
     ++statistics.received;
+    const SequenceCounts change = senders_.observe(state.authority, state.sequence);
+    statistics.lost += change.lost;
+    statistics.reordered += change.reordered;
+    statistics.duplicated += change.duplicated;
     if (state.name.size() != state.position.size()) {
       ++statistics.length_mismatches;
       reporter_.report("length", "refused a joint state with " + std::to_string(state.name.size()) +
@@ -272,6 +277,7 @@ class JointStateProcessor::Impl {
   std::string robot_name_;
   std::int64_t period_us_ = 0;
   OnceReporter reporter_;
+  JointStateSenders senders_;
   std::vector<Output> outputs_;
   std::vector<Driven> driven_;
   std::vector<std::string> unsupported_types_;
@@ -289,12 +295,12 @@ JointStateProcessor::JointStateProcessor(const RobotModel& robot, JointStateOpti
 
 JointStateProcessor::~JointStateProcessor() = default;
 
-const tf_message_t* JointStateProcessor::process(const void* data, std::size_t size,
-                                                 TimePoint arrival) {
+tf_message_t* JointStateProcessor::process(const void* data, std::size_t size,
+                                           TimePoint arrival) {
   return impl_->process(data, size, arrival);
 }
 
-const tf_message_t* JointStateProcessor::process(const joint_state_t& state, TimePoint arrival) {
+tf_message_t* JointStateProcessor::process(const joint_state_t& state, TimePoint arrival) {
   return impl_->process(state, arrival);
 }
 
@@ -314,6 +320,9 @@ std::string describe(const JointStateStatistics& s) {
       {s.unknown_joints, "unknown joint names"},
       {s.ignored_joints, "positions of fixed, floating, planar or mimic joints ignored"},
       {s.duplicate_joints, "repeated joints"},
+      {s.lost, "lost on the way (numbers skipped)"},
+      {s.reordered, "came out of order"},
+      {s.duplicated, "came twice"},
   };
   for (const auto& [count, what] : counts) {
     if (count != 0) text += "; " + std::to_string(count) + " " + what;

@@ -24,6 +24,7 @@ UrdfPublisher::UrdfPublisher(lcm::LCM& lcm, RobotModel robot, UrdfPublisherOptio
       robot_(std::move(robot)),
       options_(std::move(options)),
       processor_(robot_, options_.joint_states),
+      tf_numbering_(options_.tf_channel, options_.joint_states.authority),
       statics_(lcm_, staticOptions(options_)) {
   joint_state_subscription_ =
       lcm_.subscribe(options_.joint_states_channel, &UrdfPublisher::onJointState, this);
@@ -49,8 +50,10 @@ void UrdfPublisher::poll() {
 }
 
 void UrdfPublisher::onJointState(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {
-  const tf_message_t* batch = processor_.process(buffer->data, buffer->data_size);
-  if (batch && lcm_.publish(options_.tf_channel, batch) != 0) ++publish_failures_;
+  tf_message_t* batch = processor_.process(buffer->data, buffer->data_size);
+  if (!batch) return;
+  batch->sequence = tf_numbering_.next();
+  if (lcm_.publish(options_.tf_channel, batch) != 0) ++publish_failures_;
 }
 
 void UrdfPublisher::onDescriptionRequest(const lcm::ReceiveBuffer* buffer,

@@ -10,6 +10,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include "lcmtf/batch_numbering.hpp"
 #include "lcmtf/channels.hpp"
 #include "lcmtf/time.hpp"
 #include "lcmtf/transform_stamped.hpp"
@@ -59,6 +60,8 @@ class StaticTransformBroadcaster {
   std::unique_ptr<lcm::LCM> owned_lcm_;
   lcm::LCM& lcm_;
   lcm::Subscription* subscription_ = nullptr;
+  BatchNumbering numbering_;
+  std::mutex publish_mutex_;  // batches leave in the order of their numbers
   mutable std::mutex mutex_;
   std::map<std::string, TransformStamped> transforms_;
   std::chrono::steady_clock::time_point last_published_;

@@ -6,17 +6,19 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include "lcmtf/batch_numbering.hpp"
 #include "lcmtf/channels.hpp"
 #include "lcmtf/tf_message_t.hpp"
 #include "lcmtf/transform_stamped.hpp"
 
 namespace lcmtf {
 
-/// The tf_message_t for a batch of transforms: sent at `sent`, signed by `authority`.
+/// The tf_message_t for a batch of transforms: sent at `sent`, signed by `authority`, not
+/// numbered (sequence 0; broadcasters number theirs).
 tf_message_t makeTfMessage(const std::vector<TransformStamped>& transforms,
                            const std::string& authority, TimePoint sent = now());
 
-/// Publishes dynamic transforms: one tf_message_t per sendTransform call.
+/// Publishes dynamic transforms: one tf_message_t per sendTransform call, numbered.
 class TransformBroadcaster {
  public:
   /// Publishes through the application's LCM, which must outlive the broadcaster.
@@ -38,6 +40,7 @@ class TransformBroadcaster {
   lcm::LCM& lcm_;
   std::string channel_;
   std::string authority_;
+  BatchNumbering numbering_;
 };
 
 }  // namespace lcmtf

@@ -18,6 +18,11 @@
 
 namespace lcmtf {
 
+namespace detail {
+class ListenerAuthorities;
+struct HeardAuthority;
+}  // namespace detail
+
 /// What a TransformListener listens to and what it accepts.
 struct ListenerOptions {
   std::string lcm_url;  ///< for the listener's own LCM; "" is LCM's default
@@ -27,6 +32,7 @@ struct ListenerOptions {
   bool static_only = false;                      ///< ignore the dynamic channel
   std::vector<std::string> allowed_authorities;  ///< empty: accept every sender
   std::size_t max_frames = 10000;                ///< new frame names beyond this are refused
+  std::size_t max_authorities = 1000;  ///< senders followed; a new one forgets the least recent
   DecodeLimits limits;                           ///< bounds on incoming messages
   int queue_capacity = 1000;                     ///< messages LCM queues per channel
   std::string authority = defaultAuthority();    ///< names this listener in its requests
@@ -35,6 +41,20 @@ struct ListenerOptions {
   std::function<void(const std::string& message)> reporter = [](const std::string& message) {
     std::cerr << "lcmtf listener: " << message << '\n';
   };
+};
+
+/// What a listener heard from one sender (on both channels) since it began following it.
+struct AuthorityStatistics {
+  std::string authority;
+  std::uint64_t batches = 0;            ///< received from it, stale ones included
+  std::uint64_t lost_batches = 0;       ///< numbers skipped (tf_message_t::sequence), not yet come
+  std::uint64_t reordered_batches = 0;  ///< came after a higher number
+  std::uint64_t duplicated_batches = 0;
+  std::uint64_t sequence_restarts = 0;  ///< its numbers began again: restarted, or a log replayed
+  std::uint64_t stale_batches = 0;      ///< dropped: older than the cache time behind its newest
+  std::uint64_t history_resets = 0;     ///< its time jumped back for good: its edges cleared
+  std::uint64_t cleared_edges = 0;      ///< edges whose dynamic history those resets dropped
+  std::uint64_t resets_held_back = 0;   ///< jumps back dropped: it reset within the cache time
 };
 
 /// What a listener has received and refused since it started.
@@ -46,7 +66,15 @@ struct ListenerStatistics {
   std::uint64_t unauthorized = 0;         ///< batches from authorities not allowed
   std::uint64_t frame_limit = 0;          ///< transforms refused by max_frames
   std::uint64_t stale_batches = 0;        ///< dropped: older than the cache time behind the newest
-  std::uint64_t history_resets = 0;       ///< time jumped back for good: dynamic history cleared
+  std::uint64_t history_resets = 0;  ///< a sender's time jumped back for good: its edges cleared
+  std::uint64_t cleared_edges = 0;   ///< edges whose dynamic history those resets dropped
+  std::uint64_t resets_held_back = 0;     ///< jumps back dropped: that sender reset not long ago
+  std::uint64_t lost_batches = 0;         ///< over all senders, as in AuthorityStatistics
+  std::uint64_t reordered_batches = 0;
+  std::uint64_t duplicated_batches = 0;
+  std::uint64_t sequence_restarts = 0;
+  std::uint64_t authorities_followed = 0;   ///< now, at most max_authorities
+  std::uint64_t authorities_forgotten = 0;  ///< to make room for new ones (their counts stay here)
 };
 
 /// Feeds a Buffer from the TF and TF_STATIC channels, and asks static broadcasters to resend
@@ -66,6 +94,8 @@ class TransformListener {
   /// Asks every static broadcaster to resend its set now.
   void requestStatics();
   ListenerStatistics statistics() const;
+  /// Per sender followed now, the most recently heard first.
+  std::vector<AuthorityStatistics> authorityStatistics() const;
 
   /// Handles one encoded tf_message_t as if it had arrived on `channel` (replay, tests).
   void handleMessage(const void* data, std::size_t size, const std::string& channel);
@@ -75,7 +105,10 @@ class TransformListener {
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel);
   void handleBatch(const tf_message_t& batch, bool is_static);
   bool allowed(const std::string& authority) const;
-  bool isStale(const tf_message_t& batch);
+  detail::HeardAuthority& hear(const tf_message_t& batch, bool is_static);
+  bool isStale(const tf_message_t& batch, detail::HeardAuthority& sender);
+  void restartHistory(const tf_message_t& batch, std::int64_t batch_newest,
+                      detail::HeardAuthority& sender);
   std::int64_t newestStored(const tf_message_t& batch) const;
   void report(const std::string& kind, const std::string& message);
 
@@ -87,8 +120,10 @@ class TransformListener {
 
   mutable std::mutex mutex_;  // guards what follows
   ListenerStatistics statistics_;
-  std::map<std::string, std::int64_t> newest_by_authority_;
-  std::map<std::string, int> stale_in_a_row_;
+  std::unique_ptr<detail::ListenerAuthorities> authorities_;
+  AuthorityStatistics forgotten_;  // summed over the senders forgotten
+  bool heard_dynamic_ = false;
+  std::size_t resets_reported_ = 0;
   std::map<std::string, bool> reported_;
 
   std::atomic<bool> stopping_{false};

@@ -18,7 +18,7 @@ struct JointPublisherConfig {
   std::string channel = kJointStatesChannel;
   std::string description_channel = kRobotDescriptionChannel;
   std::string description_request_channel = kRobotDescriptionRequestChannel;
-  std::string authority = defaultAuthority();  ///< names this program in description requests
+  std::string authority = defaultAuthority();  ///< signs its joint states and description requests
   double rate = 50.0;                          ///< joint states per second
   double duration = 0.0;                       ///< seconds to run; 0 runs until stopped
   JointStateGeneratorOptions generator;

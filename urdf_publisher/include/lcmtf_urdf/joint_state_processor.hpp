@@ -40,6 +40,9 @@ struct JointStateStatistics {
   std::uint64_t unknown_joints = 0;        ///< entries naming no joint of the robot
   std::uint64_t ignored_joints = 0;    ///< entries naming a fixed, floating, planar or mimic joint
   std::uint64_t duplicate_joints = 0;  ///< entries repeating a joint of the same message
+  std::uint64_t lost = 0;  ///< numbered joint states (joint_state_t::sequence) that never came
+  std::uint64_t reordered = 0;   ///< numbered joint states that came after a higher number
+  std::uint64_t duplicated = 0;  ///< numbered joint states that came again
 };
 
 /// One line: what was handled and, when there were any, what was refused and why.
@@ -55,9 +58,9 @@ class JointStateProcessor {
   JointStateProcessor& operator=(const JointStateProcessor&) = delete;
 
   /// The batch for an encoded joint_state_t received at `arrival`, or null when there is
-  /// nothing to publish. The batch stays valid until the next call.
-  const tf_message_t* process(const void* data, std::size_t size, TimePoint arrival = now());
-  const tf_message_t* process(const joint_state_t& state, TimePoint arrival = now());
+  /// nothing to publish. The batch (not numbered) stays valid until the next call.
+  tf_message_t* process(const void* data, std::size_t size, TimePoint arrival = now());
+  tf_message_t* process(const joint_state_t& state, TimePoint arrival = now());
 
   /// What has been handled and refused so far.
   const JointStateStatistics& statistics() const;

@@ -8,6 +8,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include "lcmtf/batch_numbering.hpp"
 #include "lcmtf/channels.hpp"
 #include "lcmtf/static_transform_broadcaster.hpp"
 #include "lcmtf_urdf/joint_state_processor.hpp"
@@ -65,6 +66,7 @@ class UrdfPublisher {
   RobotModel robot_;
   UrdfPublisherOptions options_;
   JointStateProcessor processor_;
+  BatchNumbering tf_numbering_;
   StaticTransformBroadcaster statics_;
   lcm::Subscription* joint_state_subscription_ = nullptr;
   lcm::Subscription* description_request_subscription_ = nullptr;

@@ -7,6 +7,7 @@
 #include <tuple>
 #include <vector>
 
+#include "lcmtf/sequence_tracker.hpp"
 #include "lcmtf/tf_message_t.hpp"
 #include "lcmtf/time.hpp"
 
@@ -45,6 +46,7 @@ struct AuthorityTraffic {
   double average_delay_s = 0.0;
   double max_delay_s = 0.0;
   std::vector<std::string> frames;  ///< child frames it sent
+  SequenceCounts sequence;          ///< numbered batches lost, reordered, duplicated since start
 };
 
 /// A child frame sent by more than one authority in the window: one line per sender.
@@ -100,6 +102,8 @@ class TfTraffic {
   struct Sender {
     std::string name;
     std::deque<std::int64_t> batches_received;
+    SequenceTracker dynamic_sequence;
+    SequenceTracker static_sequence;
   };
 
   struct WindowTally;  // per-sender delays and frames, per-frame senders, in one pass
