@@ -361,6 +361,29 @@ TEST(TransformListener, FloodOfNewAuthorityNamesKeepsTheListenerBoundedAndGoodBa
   }
 }
 
+// Between two batches of a sender it keeps hearing, 5,000 names used once each: the listener
+// still follows that sender, so the batch lost in between is counted.
+TEST(TransformListener, FloodOfNamesUsedOnceNeverMakesTheListenerForgetASenderItKeepsHearing) {
+  Buffer buffer;
+  ListenerOptions options = onMemq();
+  options.max_authorities = 100;
+  TransformListener listener(buffer, options);
+  std::int64_t stamp = 1'000'000;
+  receive(listener, "odometry", 1, {edge("odom", "base", ++stamp)}, kTfChannel);
+  receive(listener, "odometry", 2, {edge("odom", "base", ++stamp)}, kTfChannel);
+  for (int i = 0; i < 5000; ++i) {
+    receive(listener, "flood_" + std::to_string(i), 1, {edge("map", "flooded", ++stamp)},
+            kTfChannel);
+  }
+  receive(listener, "odometry", 4, {edge("odom", "base", ++stamp)}, kTfChannel);
+  const AuthorityStatistics odometry = statisticsOf(listener, "odometry");
+  EXPECT_EQ(odometry.batches, 3u);
+  EXPECT_EQ(odometry.lost_batches, 1u);
+  EXPECT_EQ(listener.authorityStatistics().front().authority, "odometry");
+  EXPECT_EQ(listener.statistics().authorities_followed, 100u);
+  EXPECT_EQ(listener.statistics().authorities_forgotten, 5000u - 99u);
+}
+
 // Per sender and channel: 1 2 5 4 4 6 loses 3 and 4, gets 4 back late, then 4 again.
 TEST(TransformListener, SequenceGapsReordersAndDuplicatesAreCountedPerAuthorityAndChannel) {
   Buffer buffer;

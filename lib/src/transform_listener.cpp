@@ -87,7 +87,7 @@ std::vector<AuthorityStatistics> TransformListener::authorityStatistics() const 
   std::lock_guard<std::mutex> guard(mutex_);
   std::vector<AuthorityStatistics> all;
   all.reserve(authorities_->size());
-  for (const detail::HeardAuthority& heard : authorities_->byRecency()) {
+  authorities_->forEach([&all](const detail::HeardAuthority& heard) {
     AuthorityStatistics statistics = heard.statistics;
     const SequenceCounts counts = heard.sequenceCounts();
     statistics.lost_batches = counts.lost;
@@ -95,7 +95,7 @@ std::vector<AuthorityStatistics> TransformListener::authorityStatistics() const 
     statistics.duplicated_batches = counts.duplicated;
     statistics.sequence_restarts = counts.restarts;
     all.push_back(std::move(statistics));
-  }
+  });
   return all;
 }
 

@@ -32,7 +32,8 @@ struct ListenerOptions {
   bool static_only = false;                      ///< ignore the dynamic channel
   std::vector<std::string> allowed_authorities;  ///< empty: accept every sender
   std::size_t max_frames = 10000;                ///< new frame names beyond this are refused
-  std::size_t max_authorities = 1000;  ///< senders followed; a new one forgets the least recent
+  /// Senders followed; a new one forgets one heard least recently, a sender heard only once first.
+  std::size_t max_authorities = 1000;
   DecodeLimits limits;                           ///< bounds on incoming messages
   int queue_capacity = 1000;                     ///< messages LCM queues per channel
   std::string authority = defaultAuthority();    ///< names this listener in its requests
@@ -94,7 +95,7 @@ class TransformListener {
   /// Asks every static broadcaster to resend its set now.
   void requestStatics();
   ListenerStatistics statistics() const;
-  /// Per sender followed now, the most recently heard first.
+  /// Per sender followed now: those heard more than once first, each group the most recent first.
   std::vector<AuthorityStatistics> authorityStatistics() const;
 
   /// Handles one encoded tf_message_t as if it had arrived on `channel` (replay, tests).
