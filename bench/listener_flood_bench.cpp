@@ -56,9 +56,9 @@ std::string floodName(std::uint64_t n, std::size_t bytes) {
 }
 
 lcmtf::TransformStamped sample(const char* parent, const char* child, double x) {
-  return lcmtf::TransformStamped{lcmtf::now(), parent, child,
-                                 lcmtf::Transform(Eigen::Vector3d(x, 0, 0),
-                                                  Eigen::Quaterniond::Identity())};
+  return lcmtf::TransformStamped{
+      lcmtf::now(), parent, child,
+      lcmtf::Transform(Eigen::Vector3d(x, 0, 0), Eigen::Quaterniond::Identity())};
 }
 
 }  // namespace
@@ -101,8 +101,8 @@ int main(int argc, char** argv) {
   const int per_tick = std::max(1, options.flood_rate / 1000);
   while (std::chrono::steady_clock::now() < end) {
     for (int i = 0; i < per_tick; ++i) {
-      lcmtf::tf_message_t batch = lcmtf::makeTfMessage(
-          {sample("map", "flooded", 0.0)}, floodName(flood_sent++, options.name_bytes));
+      lcmtf::tf_message_t batch = lcmtf::makeTfMessage({sample("map", "flooded", 0.0)},
+                                                       floodName(flood_sent++, options.name_bytes));
       batch.sequence = 1;
       lcm.publish(lcmtf::kTfChannel, &batch);
     }
@@ -128,12 +128,11 @@ int main(int argc, char** argv) {
               options.flood_rate);
   std::printf("RSS before %.1f MB, after %.1f MB, peak %.1f MB\n", rss_before,
               memoryMegabytes("VmRSS:"), memoryMegabytes("VmHWM:"));
-  std::printf("good batches stored %llu of %llu sent (%.2f %%); lost as counted by number %llu\n",
-              static_cast<unsigned long long>(good_received),
-              static_cast<unsigned long long>(good_sent),
-              good_sent ? 100.0 * static_cast<double>(good_received) / static_cast<double>(good_sent)
-                        : 0.0,
-              static_cast<unsigned long long>(good_lost));
+  std::printf(
+      "good batches stored %llu of %llu sent (%.2f %%); lost as counted by number %llu\n",
+      static_cast<unsigned long long>(good_received), static_cast<unsigned long long>(good_sent),
+      good_sent ? 100.0 * static_cast<double>(good_received) / static_cast<double>(good_sent) : 0.0,
+      static_cast<unsigned long long>(good_lost));
   std::printf("listener: %llu batches accepted, %llu authorities followed, %llu forgotten\n",
               static_cast<unsigned long long>(stats.messages),
               static_cast<unsigned long long>(stats.authorities_followed),

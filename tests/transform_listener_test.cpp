@@ -13,9 +13,9 @@
 namespace lcmtf {
 namespace {
 
-using testing::HasSubstr;
 using std::chrono::milliseconds;
 using std::chrono::seconds;
+using testing::HasSubstr;
 
 TransformStamped edge(const std::string& parent, const std::string& child, std::int64_t utime,
                       double x = 1.0) {
@@ -221,7 +221,8 @@ TEST(TransformListener, ForgedJumpsBackClearOnlyTheForgersEdgesAtMostOncePerCach
     good.sendTransform(edge("odom", "base", stamp, 1.0 + tick));
     if (tick % 25 == 0) {
       forger.sendTransform(edge("odom", "forged", stamp));
-      for (int old = 0; old < 3; ++old) forger.sendTransform(edge("odom", "forged", stamp - 20'000'000));
+      for (int old = 0; old < 3; ++old)
+        forger.sendTransform(edge("odom", "forged", stamp - 20'000'000));
     }
     drain(lcm);
     for (const std::int64_t t : {stamp, start, (start + stamp) / 2}) {
@@ -231,7 +232,8 @@ TEST(TransformListener, ForgedJumpsBackClearOnlyTheForgersEdgesAtMostOncePerCach
     std::this_thread::sleep_for(milliseconds(10));
   }
   EXPECT_EQ(failed_lookups, 0u);
-  EXPECT_EQ(buffer.lookupTransform("odom", "base", fromUtime(start)).transform.translation.x(), 1.0);
+  EXPECT_EQ(buffer.lookupTransform("odom", "base", fromUtime(start)).transform.translation.x(),
+            1.0);
 
   const ListenerStatistics stats = listener.statistics();
   EXPECT_EQ(stats.history_resets, 1u);
@@ -297,8 +299,8 @@ TEST(TransformListener, LogPlayedAgainRestartsEachOfItsSendersAndSparesTheLiveOn
       receive(listener, "odometry", sequence, {edge("odom", "base", t, 1.0)}, kTfChannel);
       receive(listener, "arm", sequence, {edge("base", "hand", t, 2.0)}, kTfChannel);
       live_stamp += 100'000;
-      receive(listener, "live", live_stamp / 100'000,
-              {edge("world", "drone", live_stamp, 3.0)}, kTfChannel);
+      receive(listener, "live", live_stamp / 100'000, {edge("world", "drone", live_stamp, 3.0)},
+              kTfChannel);
       if (live_stamp > 100'900'000 &&
           !buffer.canTransform("world", "drone", fromUtime(live_stamp - 900'000))) {
         ++live_history_missing;
@@ -339,8 +341,7 @@ TEST(TransformListener, FloodOfNewAuthorityNamesKeepsTheListenerBoundedAndGoodBa
   std::int64_t good_sequence = 0;
   for (int i = 0; i < kFlood; ++i) {
     const std::int64_t stamp = start + i * 10;
-    receive(listener, "flood_" + std::to_string(i), 1, {edge("map", "flooded", stamp)},
-            kTfChannel);
+    receive(listener, "flood_" + std::to_string(i), 1, {edge("map", "flooded", stamp)}, kTfChannel);
     if (i % kGoodEvery == 0) {
       receive(listener, "odometry", ++good_sequence, {edge("odom", "base", stamp, 1.0)},
               kTfChannel);
@@ -398,7 +399,7 @@ TEST(TransformListener, SequenceGapsReordersAndDuplicatesAreCountedPerAuthorityA
             channel);
   };
   for (std::int64_t n : {1, 2, 5, 4, 4, 6}) send("arm", n, kTfChannel);
-  for (std::int64_t n : {1, 2, 3}) send("arm", n, kTfStaticChannel);  // numbered apart
+  for (std::int64_t n : {1, 2, 3}) send("arm", n, kTfStaticChannel);            // numbered apart
   for (std::int64_t n : {10, 11, 13, 12, 14, 20}) send("base", n, kTfChannel);  // joined late
   for (std::int64_t n : {0, 0, 0}) send("legacy", n, kTfChannel);               // not numbered
   for (std::int64_t n : {40, 41, 1, 2, 4}) send("restarted", n, kTfChannel);

@@ -6,8 +6,8 @@
 #include <thread>
 
 #include "command_line_helpers.hpp"
-#include "lcmtf/batch_numbering.hpp"
 #include "format_number.hpp"
+#include "lcmtf/batch_numbering.hpp"
 #include "lcmtf_urdf/stop_signal.hpp"
 #include "program_helpers.hpp"
 

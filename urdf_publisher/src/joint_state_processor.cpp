@@ -295,8 +295,7 @@ JointStateProcessor::JointStateProcessor(const RobotModel& robot, JointStateOpti
 
 JointStateProcessor::~JointStateProcessor() = default;
 
-tf_message_t* JointStateProcessor::process(const void* data, std::size_t size,
-                                           TimePoint arrival) {
+tf_message_t* JointStateProcessor::process(const void* data, std::size_t size, TimePoint arrival) {
   return impl_->process(data, size, arrival);
 }
 

@@ -34,7 +34,7 @@ class SequenceTracker {
   }
   void startAt(std::int64_t sequence);
 
-  std::int64_t first_ = 0;    // 0: nothing heard yet
+  std::int64_t first_ = 0;  // 0: nothing heard yet
   std::int64_t highest_ = 0;
   std::bitset<kWindow> seen_;  // of the numbers in (highest_ - kWindow, highest_]
   SequenceCounts counts_;

@@ -34,9 +34,9 @@ struct ListenerOptions {
   std::size_t max_frames = 10000;                ///< new frame names beyond this are refused
   /// Senders followed; a new one forgets one heard least recently, a sender heard only once first.
   std::size_t max_authorities = 1000;
-  DecodeLimits limits;                           ///< bounds on incoming messages
-  int queue_capacity = 1000;                     ///< messages LCM queues per channel
-  std::string authority = defaultAuthority();    ///< names this listener in its requests
+  DecodeLimits limits;                         ///< bounds on incoming messages
+  int queue_capacity = 1000;                   ///< messages LCM queues per channel
+  std::string authority = defaultAuthority();  ///< names this listener in its requests
   bool request_statics_at_start = true;  ///< false: the owner calls requestStatics() when ready
   /// Where the first refusal of each kind is reported; null: nowhere. Default: stderr.
   std::function<void(const std::string& message)> reporter = [](const std::string& message) {
@@ -67,10 +67,10 @@ struct ListenerStatistics {
   std::uint64_t unauthorized = 0;         ///< batches from authorities not allowed
   std::uint64_t frame_limit = 0;          ///< transforms refused by max_frames
   std::uint64_t stale_batches = 0;        ///< dropped: older than the cache time behind the newest
-  std::uint64_t history_resets = 0;  ///< a sender's time jumped back for good: its edges cleared
-  std::uint64_t cleared_edges = 0;   ///< edges whose dynamic history those resets dropped
-  std::uint64_t resets_held_back = 0;     ///< jumps back dropped: that sender reset not long ago
-  std::uint64_t lost_batches = 0;         ///< over all senders, as in AuthorityStatistics
+  std::uint64_t history_resets = 0;    ///< a sender's time jumped back for good: its edges cleared
+  std::uint64_t cleared_edges = 0;     ///< edges whose dynamic history those resets dropped
+  std::uint64_t resets_held_back = 0;  ///< jumps back dropped: that sender reset not long ago
+  std::uint64_t lost_batches = 0;      ///< over all senders, as in AuthorityStatistics
   std::uint64_t reordered_batches = 0;
   std::uint64_t duplicated_batches = 0;
   std::uint64_t sequence_restarts = 0;

@@ -40,8 +40,8 @@ struct JointStateStatistics {
   std::uint64_t unknown_joints = 0;        ///< entries naming no joint of the robot
   std::uint64_t ignored_joints = 0;    ///< entries naming a fixed, floating, planar or mimic joint
   std::uint64_t duplicate_joints = 0;  ///< entries repeating a joint of the same message
-  std::uint64_t lost = 0;  ///< numbered joint states (joint_state_t::sequence) that never came
-  std::uint64_t reordered = 0;   ///< numbered joint states that came after a higher number
+  std::uint64_t lost = 0;       ///< numbered joint states (joint_state_t::sequence) that never came
+  std::uint64_t reordered = 0;  ///< numbered joint states that came after a higher number
   std::uint64_t duplicated = 0;  ///< numbered joint states that came again
 };
 
