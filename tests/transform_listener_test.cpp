@@ -449,6 +449,25 @@ TEST(TransformListener, BroadcastBatchesArriveNumberedWithNothingLost) {
             0u);
 }
 
+TEST(TransformListener, AMaximumInterpolationGapMakesLookupsAcrossLostBatchesFail) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;
+  ListenerOptions options;
+  options.max_interpolation_gap = std::chrono::milliseconds(50);
+  TransformListener listener(buffer, lcm, options);
+  EXPECT_EQ(buffer.maxInterpolationGap(), std::chrono::milliseconds(50));
+  TransformBroadcaster broadcaster(lcm, kTfChannel, "driver");
+  for (const std::int64_t utime : {1'000'000, 1'010'000, 2'000'000}) {
+    ASSERT_TRUE(broadcaster.sendTransform(
+        {edge("odom", "base", utime, static_cast<double>(utime) * 1e-6)}));
+  }
+  drain(lcm);
+  EXPECT_NEAR(buffer.lookupTransform("odom", "base", fromUtime(1'005'000)).transform.translation.x(),
+              1.005, 1e-9);
+  EXPECT_THROW(buffer.lookupTransform("odom", "base", fromUtime(1'500'000)),
+               InterpolationGapException);
+}
+
 TEST(TransformListener, OwnThreadModeListensOnItsOwnLcm) {
   Buffer buffer;
   ListenerOptions options;

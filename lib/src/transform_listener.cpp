@@ -59,6 +59,9 @@ TransformListener::~TransformListener() {
 }
 
 void TransformListener::subscribe() {
+  if (options_.max_interpolation_gap != Duration::zero()) {
+    buffer_.setMaxInterpolationGap(options_.max_interpolation_gap);
+  }
   std::vector<std::string> channels{options_.static_channel};
   if (!options_.static_only) channels.push_back(options_.channel);
   for (const std::string& channel : channels) {

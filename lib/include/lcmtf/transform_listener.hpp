@@ -38,6 +38,9 @@ struct ListenerOptions {
   int queue_capacity = 1000;                   ///< messages LCM queues per channel
   std::string authority = defaultAuthority();  ///< names this listener in its requests
   bool request_statics_at_start = true;  ///< false: the owner calls requestStatics() when ready
+  /// When not zero, set on the buffer at start (BufferCore::setMaxInterpolationGap): lookups
+  /// between samples further apart, as after lost batches, fail instead of interpolating.
+  Duration max_interpolation_gap = Duration::zero();
   /// Where the first refusal of each kind is reported; null: nowhere. Default: stderr.
   std::function<void(const std::string& message)> reporter = [](const std::string& message) {
     std::cerr << "lcmtf listener: " << message << '\n';
