@@ -19,7 +19,9 @@ void expectNeitherStarves(RealtimeThread realtime) {
       lcmtf_bench::runRealtimeWorkload(realtime, std::chrono::seconds(2));
   if (!result.permitted) GTEST_SKIP() << "cannot run the real-time set-up here: " << result.why_not;
   EXPECT_LT(result.worst_lookup, kStall) << "a lookup stalled";
-  EXPECT_GE(result.batches_stored, result.batches_due * 9 / 10)
+  // Most batches, even on a loaded machine; a receiver starved by a spinning waiter stores a
+  // tenth of them.
+  EXPECT_GE(result.batches_stored, result.batches_due / 2)
       << "the receiver stored only " << result.batches_stored << " of " << result.batches_due
       << " batches";
   EXPECT_GT(result.lookups, 0u);
