@@ -2,17 +2,21 @@
 
 #include <linux/futex.h>
 #include <pthread.h>
+#include <sched.h>
 #include <sys/syscall.h>
 #include <unistd.h>
+
+#include <chrono>
 
 
 namespace lcmtf::detail {
 
 namespace {
 
-// Brief enough to cost nothing next to a lookup, long enough to cover a short write or read
-// on another core without a trip through the kernel.
-constexpr int kSpins = 100;
+// Long enough to cover a write (a batch of inserts) or a read on another core without a trip
+// through the kernel, which costs a sleeping reader tens of microseconds; short enough that a
+// waiter on the same core as the thread it waits for wastes little before it sleeps.
+constexpr auto kLongestSpin = std::chrono::microseconds(30);
 
 void pause() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -20,6 +24,24 @@ void pause() {
 #elif defined(__aarch64__)
   asm volatile("yield");
 #endif
+}
+
+// Spins until `done()` or kLongestSpin has passed; whether `done()`. After a few pauses it
+// yields too, which hands the core to an ordinary thread it waits for on the same core (a
+// real-time thread's yield does not, and it soon sleeps instead).
+template <class Done>
+bool spinUntil(Done done) {
+  constexpr unsigned kPausesBeforeYielding = 64;
+  const auto give_up = std::chrono::steady_clock::now() + kLongestSpin;
+  for (unsigned spin = 1;; ++spin) {
+    if (done()) return true;
+    if (spin < kPausesBeforeYielding) {
+      pause();
+      continue;
+    }
+    if (std::chrono::steady_clock::now() > give_up) return false;
+    sched_yield();
+  }
 }
 
 // Sleeps while `word` still holds `expected` (or until woken).
@@ -85,10 +107,7 @@ void ReadMostlyLock::leave(Slot& slot) const {
 }
 
 void ReadMostlyLock::waitWhileWriting() const {
-  for (int spin = 0; spin < kSpins; ++spin) {
-    if (writing_.load(std::memory_order_acquire) == 0) return;
-    pause();
-  }
+  if (spinUntil([this] { return writing_.load(std::memory_order_acquire) == 0; })) return;
   while (writing_.load(std::memory_order_seq_cst) != 0) {
     pthread_mutex_lock(&writers_);
     pthread_mutex_unlock(&writers_);
@@ -102,10 +121,7 @@ void ReadMostlyLock::lock() {
 }
 
 void ReadMostlyLock::waitUntilEmpty(const Slot& slot) {
-  for (int spin = 0; spin < kSpins; ++spin) {
-    if (slot.readers.load(std::memory_order_seq_cst) == 0) return;
-    pause();
-  }
+  if (spinUntil([&slot] { return slot.readers.load(std::memory_order_seq_cst) == 0; })) return;
   while (slot.readers.load(std::memory_order_seq_cst) != 0) {
     const std::uint32_t seen = reader_left_.load(std::memory_order_seq_cst);
     writer_sleeping_.store(1, std::memory_order_seq_cst);
