@@ -64,20 +64,14 @@ void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t 
 }
 
 // The value of the path the walk found at `stamp`, by the same sampler and product as the
-// quick lookups. At stamp 0 (the latest common time of edges with samples stamped 0, as a
-// sender with no clock may send) each edge gives its newest sample, as in tf.
+// quick lookups.
 Transform pathValue(const std::vector<FrameRecord>& frames, WalkScratch& s, std::int64_t stamp) {
   const std::size_t count = s.source_edges.size() + s.target_edges.size();
   s.steps.clear();
   for (const auto* edges : {&s.source_edges, &s.target_edges}) {
     for (const PathEdge& edge : *edges) {
       const detail::TimeCache* cache = edge.isDynamic() ? &frames[edge.child].cache : nullptr;
-      const Transform* fixed = edge.fixed;
-      if (cache && stamp == 0) {
-        fixed = &cache->newestTransform();
-        cache = nullptr;
-      }
-      s.steps.push_back({cache, fixed, false, false, detail::TimeCache::kNoHint});
+      s.steps.push_back({cache, edge.fixed, false, false, detail::TimeCache::kNoHint});
     }
   }
   if (s.tasks.size() < count) {
@@ -283,8 +277,8 @@ LookupFailure BufferCore::Impl::lookupByWalk(FrameId target, FrameId source, std
     FrameId ancestor = kNoFrame;
     if (!failure && !(latest && stamp == 0)) {
       failure = walk(target, source, stamp, s.source_edges, s.target_edges, &ancestor);
-      if (!failure && max_gap_ != 0 && stamp != 0) failure = findGap(s.source_edges, stamp);
-      if (!failure && max_gap_ != 0 && stamp != 0) failure = findGap(s.target_edges, stamp);
+      if (!failure && max_gap_ != 0) failure = findGap(s.source_edges, stamp);
+      if (!failure && max_gap_ != 0) failure = findGap(s.target_edges, stamp);
     }
   }
   if (failure) {

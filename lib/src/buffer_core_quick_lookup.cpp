@@ -134,8 +134,6 @@ bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frame
   std::int64_t at = stamp;
   if (stamp == 0 && common_newest.any_dynamic) {
     at = common_newest.stamp;
-    // Samples stamped 0 itself: time 0 then means each edge's newest sample, as the walk has it.
-    if (at == 0) return false;
     for (std::size_t i = 0; i < count; ++i) {
       PlanStep& step = steps[i];
       if (!step.cache) continue;

@@ -8,7 +8,6 @@
 
 #include <chrono>
 
-
 namespace lcmtf::detail {
 
 namespace {

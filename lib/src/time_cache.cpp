@@ -136,6 +136,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     is_static_ = false;
   }
   if (isTooOld(sample.stamp, cache_time)) return InsertOutcome::kTooOld;
+  if (isFullAndOlder(sample.stamp, most_samples)) return InsertOutcome::kFullAndOlder;
   if (anchor_T_parent && !anchoring_) startAnchoring();
   if (count_ > 0 && sample.stamp <= newest_stamp_) {
     std::size_t index = indexAtOrBefore(sample.stamp);
@@ -146,11 +147,10 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
       refreshEnds();
       return InsertOutcome::kReplaced;
     }
-    bool dropped = false;
-    if (count_ >= most_samples) {
-      if (index == count_) return InsertOutcome::kFullAndOlder;
+    // A full edge's oldest sample makes room (isFullAndOlder() refused one older than all).
+    const bool dropped = count_ >= most_samples;
+    if (dropped) {
       dropOldest();
-      dropped = true;
       --index;
     }
     if (count_ == stamps_.size()) grow(cache_time, most_samples);

@@ -107,8 +107,6 @@ class TimeCache {
   std::int64_t singleParentFrom() const { return single_parent_from_; }
   std::int64_t newestStamp() const { return newest_stamp_; }
   FrameId newestParent() const { return newest_parent_; }
-  /// The newest sample's value, of a dynamic edge with samples.
-  const Transform& newestTransform() const { return transformAt(count_ - 1); }
 
   /// The samples that give the edge's value at `stamp` (any stamp for a static edge).
   SampleStatus find(std::int64_t stamp, SampleSpan& span) const;
