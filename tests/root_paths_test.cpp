@@ -35,8 +35,7 @@ struct Frames {
 
   /// A dynamic edge from `child` to `parent`, sampled at `stamp`.
   void attach(FrameId child, FrameId parent, std::int64_t stamp = kFirstStamp) {
-    records[child].cache.insert(detail::EdgeSample{stamp, parent, offsetOf(child)}, kCacheTime,
-                                anchorOf(records, parent));
+    records[child].cache.insert(detail::EdgeSample{stamp, parent, offsetOf(child)}, kCacheTime);
   }
   /// A newer sample of `child`'s dynamic edge, under `parent`.
   void reparent(FrameId child, FrameId parent) {
@@ -91,13 +90,13 @@ std::optional<std::vector<RootStep>> climbFrom(const std::vector<FrameRecord>& f
 ::testing::AssertionResult sameStep(const RootStep& actual, const RootStep& expected) {
   if (actual.cache == expected.cache && actual.fixed == expected.fixed &&
       actual.child == expected.child && actual.parent == expected.parent &&
-      actual.next == expected.next && actual.anchored == expected.anchored) {
+      actual.next == expected.next && actual.anchor == expected.anchor) {
     return ::testing::AssertionSuccess();
   }
   return ::testing::AssertionFailure()
          << "step " << actual.child << " -> " << actual.parent << " (to " << actual.next
-         << (actual.anchored ? ", anchored" : "") << "), expected " << expected.child << " -> "
-         << expected.parent << " (to " << expected.next << (expected.anchored ? ", anchored" : "")
+         << (actual.anchored() ? ", anchored" : "") << "), expected " << expected.child << " -> "
+         << expected.parent << " (to " << expected.next << (expected.anchored() ? ", anchored" : "")
          << ")";
 }
 
@@ -404,9 +403,9 @@ TEST(RootPaths, DynamicStepIntoAStaticChainIsAnchored) {
   EXPECT_EQ(path.steps[0].cache, &records[target].cache);
   EXPECT_EQ(path.steps[0].parent, sensor);
   EXPECT_EQ(path.steps[0].next, base);
-  EXPECT_TRUE(path.steps[0].anchored);
+  EXPECT_TRUE(path.steps[0].anchored());
   EXPECT_EQ(path.steps[1].cache, &records[base].cache);
-  EXPECT_FALSE(path.steps[1].anchored);
+  EXPECT_FALSE(path.steps[1].anchored());
 
   ASSERT_TRUE(paths.find(records, sensor, path));
   ASSERT_EQ(path.size, 2u);
@@ -416,11 +415,11 @@ TEST(RootPaths, DynamicStepIntoAStaticChainIsAnchored) {
 
   ASSERT_TRUE(paths.find(records, probe, path));
   ASSERT_EQ(path.size, 2u);
-  EXPECT_FALSE(path.steps[0].anchored);
+  EXPECT_FALSE(path.steps[0].anchored());
 
   ASSERT_TRUE(paths.find(records, follower, path));
   ASSERT_EQ(path.size, 2u);
-  EXPECT_FALSE(path.steps[0].anchored);
+  EXPECT_FALSE(path.steps[0].anchored());
   EXPECT_EQ(path.steps[0].next, lone_static);
   EXPECT_EQ(path.steps[1].fixed, &records[lone_static].cache.staticValue().transform);
   EXPECT_EQ(path.steps[1].next, world);

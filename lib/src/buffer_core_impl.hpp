@@ -137,9 +137,8 @@ class BufferCore::Impl {
   LookupFailure climb(FrameId target, FrameId source, std::int64_t stamp, bool through_missing_data,
                       std::vector<PathEdge>& source_edges, std::vector<PathEdge>& target_edges,
                       FrameId* ancestor) const;
-  /// Recomputes every frame's static_top after a static edge changed, and the anchored samples
-  /// of the edges into frames whose chain changed (exclusive lock).
-  void updateStaticChains();
+  /// Recomputes every frame's static_top and the chain up to it after a static edge changed
+  /// (exclusive lock).
   void computeStaticChains();
   /// Brings the root paths up to date (exclusive lock): rebuilt when a frame they know has
   /// changed its edge, extended when only new frames have come.

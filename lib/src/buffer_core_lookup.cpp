@@ -23,6 +23,7 @@ struct WalkScratch {
   std::vector<detail::PlanStep> steps;
   std::vector<detail::InterpolationTask> tasks;
   std::vector<detail::TransformRoom> rooms;
+  std::vector<detail::Anchoring> anchorings;
   std::vector<const Transform*> values;
 };
 thread_local WalkScratch scratch;
@@ -71,16 +72,17 @@ Transform pathValue(const std::vector<FrameRecord>& frames, WalkScratch& s, std:
   for (const auto* edges : {&s.source_edges, &s.target_edges}) {
     for (const PathEdge& edge : *edges) {
       const detail::TimeCache* cache = edge.isDynamic() ? &frames[edge.child].cache : nullptr;
-      s.steps.push_back({cache, edge.fixed, false, false, detail::TimeCache::kNoHint});
+      s.steps.push_back({cache, edge.fixed, nullptr, false, detail::TimeCache::kNoHint});
     }
   }
   if (s.tasks.size() < count) {
     s.tasks.resize(count);
     s.rooms.resize(count);
+    s.anchorings.resize(count);
     s.values.resize(count);
   }
   const detail::PathPlan plan{s.steps.data(), s.source_edges.size(), s.target_edges.size(), stamp};
-  detail::PathSampler sampler(s.tasks.data(), s.rooms.data());
+  detail::PathSampler sampler({s.tasks.data(), s.rooms.data(), s.anchorings.data()});
   sampler.sample(plan, s.values.data());
   sampler.run();
   Transform target_T_source;
@@ -365,35 +367,6 @@ LookupFailure BufferCore::Impl::resolveAll(const std::string& target, const std:
     return failure;
   }
   return resolve(fixed, "fixed", fixed_id);
-}
-
-void BufferCore::Impl::updateStaticChains() {
-  struct Chain {
-    FrameId top;
-    Transform top_T_frame;
-  };
-  std::vector<Chain> before;
-  before.reserve(frames_.size());
-  for (const FrameRecord& record : frames_) {
-    before.push_back({record.static_top, record.static_top_T_frame});
-  }
-  computeStaticChains();
-  // Edges into a frame whose chain changed hold samples anchored to the old chain.
-  std::vector<char> changed(frames_.size(), 0);
-  for (FrameId frame = 1; frame < frames_.size(); ++frame) {
-    const FrameRecord& record = frames_[frame];
-    const Chain& old = before[frame];
-    changed[frame] =
-        old.top != record.static_top ||
-        old.top_T_frame.translation != record.static_top_T_frame.translation ||
-        old.top_T_frame.rotation.coeffs() != record.static_top_T_frame.rotation.coeffs();
-  }
-  auto anchor = [this](FrameId parent) { return anchorOf(frames_, parent); };
-  for (FrameRecord& record : frames_) {
-    detail::TimeCache& cache = record.cache;
-    if (cache.isStatic() || cache.empty()) continue;
-    if (!cache.hasSingleParent() || changed[cache.newestParent()]) cache.reanchor(anchor);
-  }
 }
 
 void BufferCore::Impl::computeStaticChains() {

@@ -31,11 +31,4 @@ inline void continueStaticChain(FrameRecord& record, const FrameRecord& parent,
   record.static_top_T_frame = parent.static_top_T_frame * parent_T_record;
 }
 
-/// What anchors the samples of the edges into `frame` (see TimeCache::reanchor): the static
-/// chain above it, or null when there is none.
-inline const Transform* anchorOf(const std::vector<FrameRecord>& frames, FrameId frame) {
-  const FrameRecord& record = frames[frame];
-  return record.static_top != frame ? &record.static_top_T_frame : nullptr;
-}
-
 }  // namespace lcmtf

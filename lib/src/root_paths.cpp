@@ -22,7 +22,7 @@ RootStep stepFrom(const std::vector<FrameRecord>& frames, FrameId frame) {
   step.parent = step.next = record.cache.newestParent();
   if (step.parent != kNoFrame) {
     step.next = frames[step.parent].static_top;
-    step.anchored = step.next != step.parent;
+    if (step.next != step.parent) step.anchor = &frames[step.parent].static_top_T_frame;
   }
   return step;
 }

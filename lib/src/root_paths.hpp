@@ -9,14 +9,17 @@ namespace lcmtf {
 
 /// One step up the tree as lookups take it: a chain of static edges to the highest frame it
 /// reaches, a single static edge (on a loop of static edges), or one dynamic edge, anchored
-/// to the static chain above its parent when there is one (see TimeCache::reanchor).
+/// to the static chain above its parent when there is one.
 struct RootStep {
   const detail::TimeCache* cache = nullptr;  // a dynamic edge's history; null when static
   const Transform* fixed = nullptr;          // a static step's value
   FrameId child = kNoFrame;
   FrameId parent = kNoFrame;  // the edge's parent (for a chain, where it ends)
   FrameId next = kNoFrame;    // where the step ends; kNoFrame above a root
-  bool anchored = false;
+  // A dynamic edge's anchor: the static chain above its parent, which the step crosses too;
+  // null when there is none.
+  const Transform* anchor = nullptr;
+  bool anchored() const { return anchor != nullptr; }
 };
 
 /// The step up from `frame`, as of each edge's newest sample.
