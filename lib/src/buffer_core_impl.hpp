@@ -194,7 +194,7 @@ class BufferCore::Impl {
   // limit, every lookup takes the walk, which checks it.
   std::int64_t max_gap_ = 0;
   detail::NameArena names_;  // stable storage behind FrameRecord::name
-  std::vector<FrameRecord> frames_;
+  FrameTable frames_;
   detail::FrameNameIndex ids_;
   RootPaths root_paths_;
   bool root_paths_stale_ = false;
@@ -216,7 +216,7 @@ class BufferCore::Impl {
 };
 
 /// The frames of the loop above `start` in the tree at `stamp` (0: as of the newest samples).
-std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId start,
+std::vector<FrameId> findLoop(const FrameTable& frames, FrameId start,
                               std::int64_t stamp, bool latest);
 
 /// One leading '/' is not part of a frame's name.

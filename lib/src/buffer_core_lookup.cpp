@@ -31,7 +31,7 @@ thread_local WalkScratch scratch;
 }  // namespace
 
 // Walks up from `start` for more steps than there are frames to find the frames of the loop.
-std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId start,
+std::vector<FrameId> findLoop(const FrameTable& frames, FrameId start,
                               std::int64_t stamp, bool latest) {
   std::vector<FrameId> visited;
   FrameId frame = start;
@@ -50,7 +50,7 @@ namespace {
 
 // The edge up from `frame`, as it was at `stamp` (0: as of its newest sample); its parent is
 // kNoFrame at a root.
-void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t stamp,
+void stepUp(const FrameTable& frames, FrameId frame, std::int64_t stamp,
             PathEdge& edge) {
   const detail::TimeCache& cache = frames[frame].cache;
   edge.child = frame;
@@ -66,7 +66,7 @@ void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t 
 
 // The value of the path the walk found at `stamp`, by the same sampler and product as the
 // quick lookups.
-Transform pathValue(const std::vector<FrameRecord>& frames, WalkScratch& s, std::int64_t stamp) {
+Transform pathValue(const FrameTable& frames, WalkScratch& s, std::int64_t stamp) {
   const std::size_t count = s.source_edges.size() + s.target_edges.size();
   s.steps.clear();
   for (const auto* edges : {&s.source_edges, &s.target_edges}) {
@@ -91,7 +91,7 @@ Transform pathValue(const std::vector<FrameRecord>& frames, WalkScratch& s, std:
 }
 
 // A dynamic edge without data at `stamp`, as a failure.
-LookupFailure missingData(const std::vector<FrameRecord>& frames, const PathEdge& edge,
+LookupFailure missingData(const FrameTable& frames, const PathEdge& edge,
                           std::int64_t stamp) {
   const detail::TimeCache& cache = frames[edge.child].cache;
   LookupFailure failure;
@@ -106,7 +106,7 @@ LookupFailure missingData(const std::vector<FrameRecord>& frames, const PathEdge
 }
 
 // The newest stamp every dynamic edge of the walk has data at; 0 when all are static.
-std::int64_t commonNewest(const std::vector<FrameRecord>& frames,
+std::int64_t commonNewest(const FrameTable& frames,
                           const std::vector<PathEdge>& source_edges,
                           const std::vector<PathEdge>& target_edges) {
   CommonNewest common;

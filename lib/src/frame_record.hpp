@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "lcmtf/transform.hpp"
+#include "stable_vector.hpp"
 #include "time_cache.hpp"
 
 namespace lcmtf {
@@ -23,6 +24,9 @@ struct FrameRecord {
   FrameId static_top = kNoFrame;
   Transform static_top_T_frame;
 };
+
+/// Every frame's record, indexed by FrameId; records stay where they are as frames are added.
+using FrameTable = detail::StableVector<FrameRecord>;
 
 /// Continues `parent`'s static chain through `record`'s static edge `parent_T_record`.
 inline void continueStaticChain(FrameRecord& record, const FrameRecord& parent,

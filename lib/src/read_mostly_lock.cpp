@@ -6,6 +6,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace lcmtf::detail {
@@ -60,11 +61,14 @@ void wakeOne(const std::atomic<std::uint32_t>& word) {
 // not initial-exec, so the library can be loaded by dlopen (as a Python extension is).
 constexpr std::size_t kNoSlot = static_cast<std::size_t>(-1);
 thread_local std::size_t thread_slot = kNoSlot;
+// How many threads have taken a slot, so that a writer in a process with few threads checks
+// only the slots they use. A thread counts itself before it first enters a slot, both in the
+// total order of seq_cst operations that lock() reads this in.
+std::atomic<std::size_t> threads_with_slots{0};
 
 std::size_t threadSlot() {
   if (thread_slot == kNoSlot) {
-    static std::atomic<std::size_t> next_thread{0};
-    thread_slot = next_thread.fetch_add(1, std::memory_order_relaxed);
+    thread_slot = threads_with_slots.fetch_add(1, std::memory_order_seq_cst);
   }
   return thread_slot;
 }
@@ -118,7 +122,8 @@ void ReadMostlyLock::waitWhileWriting() const {
 void ReadMostlyLock::lock() {
   pthread_mutex_lock(&writers_);
   writing_.store(1, std::memory_order_seq_cst);
-  for (const Slot& slot : slots_) waitUntilEmpty(slot);
+  const std::size_t used = std::min(kSlots, threads_with_slots.load(std::memory_order_seq_cst));
+  for (std::size_t i = 0; i < used; ++i) waitUntilEmpty(slots_[i]);
 }
 
 void ReadMostlyLock::waitUntilEmpty(const Slot& slot) {
