@@ -124,7 +124,6 @@ bool planPath(const RootPaths& root_paths, const FrameTable& frames, FrameId tar
   const std::size_t count = meeting.source_count + meeting.target_count;
   if (count > kMostSteps) return false;
   PlanStep* const steps = path.steps;
-  prefetch = prefetch && stamp != 0;
   CommonNewest common_newest;
   if (!takeSteps(up_from_source.steps, meeting.source_count, meeting.source_anchored, stamp,
                  prefetch, steps, common_newest) ||
@@ -135,6 +134,12 @@ bool planPath(const RootPaths& root_paths, const FrameTable& frames, FrameId tar
   std::int64_t at = stamp;
   if (stamp == 0 && common_newest.any_dynamic) {
     at = common_newest.stamp;
+    // The samples near the newest of every step load at once, before any is read.
+    if (prefetch) {
+      for (std::size_t i = 0; i < count; ++i) {
+        if (steps[i].cache) steps[i].cache->prefetchNewest();
+      }
+    }
     for (std::size_t i = 0; i < count; ++i) {
       PlanStep& step = steps[i];
       if (!step.cache) continue;

@@ -130,6 +130,13 @@ class TimeCache {
                                                                                 : kNoHint;
   }
   static constexpr std::size_t kNoHint = static_cast<std::size_t>(-1);
+  /// Starts loading the two newest samples, which hintNearNewest() and a lookup near the
+  /// newest time read.
+  void prefetchNewest() const {
+    if (count_ < 2) return;
+    __builtin_prefetch(samples_.address(slot(count_ - 2)));
+    __builtin_prefetch(samples_.address(slot(count_ - 1)));
+  }
 
  private:
   std::size_t slot(std::size_t index) const {
