@@ -15,6 +15,7 @@
 
 #include "buffer_core_summary.hpp"
 #include "lcmtf_subject.hpp"
+#include "memory_latency.hpp"
 #include "tree_shapes.hpp"
 #ifdef LCMTF_BENCH_WITH_TF2
 #include "tf2_subject.hpp"
@@ -412,7 +413,7 @@ int main(int argc, char** argv) {
   }
   RecordingReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  printSummary(reporter, shapes);
+  printSummary(reporter, shapes, memoryLatencyNs());
   benchmark::Shutdown();
   return 0;
 }

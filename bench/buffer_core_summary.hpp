@@ -40,7 +40,7 @@ inline double spreadPercent(const RecordingReporter::Result& result) {
 }
 
 inline void printShapeRows(const RecordingReporter& reporter, const std::string& shape,
-                           bool forest) {
+                           bool forest, double memory_latency_ns) {
   std::printf("\n%-38s %9s %7s %9s %7s %9s %7s\n", (shape + ": ns per call").c_str(), "lcmtf",
               "spread", "tf2", "spread", "tf2/lcmtf", "target");
   for (const SummaryRow& row : kSummaryRows) {
@@ -56,6 +56,9 @@ inline void printShapeRows(const RecordingReporter& reporter, const std::string&
     std::printf("%-38s %9.1f %6.1f%% %9.1f %6.1f%% %9.2f", row.label, ours->real_time,
                 spreadPercent(*ours), theirs->real_time, spreadPercent(*theirs), ratio);
     if (target > 0) std::printf(" %6.0fx %s", target, ratio >= target ? "met" : "MISSED");
+    if (forest && memory_latency_ns > 0 && std::string(row.ours).rfind("lookup", 0) == 0) {
+      std::printf("  (%.1f memory latencies)", ours->real_time / memory_latency_ns);
+    }
     std::printf("\n");
   }
   const double ours_sample = counter(reporter.find("lcmtf/" + shape + "/memory"), "bytes_per_sample");
@@ -75,12 +78,17 @@ inline void printShapeRows(const RecordingReporter& reporter, const std::string&
 
 }  // namespace detail
 
-inline void printSummary(const RecordingReporter& reporter, const std::vector<std::string>& shapes) {
+/// `memory_latency_ns` is the time of a load that misses every cache (memory_latency.hpp): the
+/// lookups in the forest, far larger than the caches, are given in those too.
+inline void printSummary(const RecordingReporter& reporter, const std::vector<std::string>& shapes,
+                         double memory_latency_ns) {
   std::printf("\nEach figure is the fastest of the alternating rounds; spread is how much slower "
               "the slowest round was.\n");
   for (const std::string& shape : shapes) {
-    detail::printShapeRows(reporter, shape, shape == shapes.back());
+    detail::printShapeRows(reporter, shape, shape == shapes.back(), memory_latency_ns);
   }
+  std::printf("\nA load that misses every cache takes %.1f ns here (a pointer chase through 256 "
+              "MB).\n", memory_latency_ns);
   std::printf("\n");
   for (const char* library : {"lcmtf", "tf2"}) {
     const std::string prefix = std::string(library) + "/" + shapes.front() + "/";
