@@ -12,10 +12,11 @@ namespace lcmtf {
 using detail::FrameId;
 using detail::kNoFrame;
 
-/// One frame and the edge to its parent.
-struct FrameRecord {
-  std::string_view name;
+/// One frame and the edge to its parent. Each record starts a cache line, its edge's hot part
+/// first.
+struct alignas(64) FrameRecord {
   detail::TimeCache cache;
+  std::string_view name;
   std::uint32_t authority = 0;
   std::uint64_t authority_conflicts = 0;
   // The highest frame reached from this one through static edges alone (this frame itself

@@ -160,9 +160,10 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
   const std::int64_t horizon = saturatingSubtract(sample.stamp, cache_time);
   while (stampAt(0) < horizon) dropOldest();
   refreshEnds();
-  // The next insert reads the stamp of the sample after the oldest, long out of the cache by
-  // then on a busy edge.
+  // The next insert reads the stamp of the sample after the oldest and writes the slot after
+  // the newest, both long out of the cache by then on a busy edge.
   if (count_ > 1) __builtin_prefetch(samples_.address(slot(1)));
+  if (count_ < samples_.size()) __builtin_prefetch(samples_.address(slot(count_)), 1);
   return dropped ? InsertOutcome::kAddedDroppingOldest : InsertOutcome::kAdded;
 }
 

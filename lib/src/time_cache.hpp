@@ -179,25 +179,27 @@ class TimeCache {
   void noteParentChanges(std::size_t index);
   void refreshEnds();
 
+  // What lookups and inserts of a dynamic edge read come first, together, so that they touch
+  // two cache lines of the edge; the static value, which they do not read, comes last.
   SampleRing samples_;
-  // A parent per sample, once the edge has had more than one; until then every sample's parent
-  // is only_parent_.
-  UnfilledArray<FrameId> parents_;
-  FrameId only_parent_ = kNoFrame;
-  EdgeValue static_value_;
   std::size_t head_ = 0;
   std::size_t count_ = 0;
+  // Copies of what lookups read most, so walking the tree touches no sample.
+  std::int64_t oldest_stamp_ = 0;
+  std::int64_t newest_stamp_ = 0;
+  double samples_per_utime_ = 0.0;  // (count - 1) / (newest - oldest), for guessIndex()
+  std::int64_t single_parent_from_ = std::numeric_limits<std::int64_t>::max();
+  FrameId oldest_parent_ = kNoFrame;
+  FrameId newest_parent_ = kNoFrame;
+  FrameId only_parent_ = kNoFrame;
   bool is_static_ = false;
   // The newest stamp at which the parent differs from the sample before; samples up to the
   // oldest one all share a parent when this is not newer than the oldest.
   std::int64_t parent_changed_at_ = std::numeric_limits<std::int64_t>::min();
-  // Copies of what lookups read most, so walking the tree touches no sample.
-  std::int64_t oldest_stamp_ = 0;
-  std::int64_t newest_stamp_ = 0;
-  FrameId oldest_parent_ = kNoFrame;
-  FrameId newest_parent_ = kNoFrame;
-  double samples_per_utime_ = 0.0;  // (count - 1) / (newest - oldest), for guessIndex()
-  std::int64_t single_parent_from_ = std::numeric_limits<std::int64_t>::max();
+  // A parent per sample, once the edge has had more than one; until then every sample's parent
+  // is only_parent_.
+  UnfilledArray<FrameId> parents_;
+  EdgeValue static_value_;
 };
 
 // Where `stamp` would be if the samples were evenly spaced, as most publishers space them
