@@ -34,25 +34,6 @@ const Workload& workload() {
   return w;
 }
 
-std::vector<std::size_t> dynamicEdges(const Workload& w) {
-  std::vector<std::size_t> indices;
-  for (std::size_t i = 0; i < w.edges.size(); ++i) {
-    if (w.edges[i].dynamic) indices.push_back(i);
-  }
-  return indices;
-}
-
-template <class Subject>
-void fill(Subject& subject, const Workload& w) {
-  for (std::size_t i = 0; i < w.edges.size(); ++i) {
-    if (!w.edges[i].dynamic) subject.set(i, w.oldest_common, w.edges[i].samples[0], true);
-  }
-  const std::vector<std::size_t> dynamic = dynamicEdges(w);
-  for (std::size_t k = 0; k < Workload::kSamples; ++k) {
-    for (std::size_t i : dynamic) subject.set(i, w.stamp(w.edges[i], k), w.edges[i].samples[k]);
-  }
-}
-
 template <class Subject>
 std::unique_ptr<Subject> makeFilled() {
   auto subject = std::make_unique<Subject>(workload());

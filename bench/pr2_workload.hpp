@@ -200,6 +200,27 @@ inline void buildQueries(Workload& w, std::mt19937_64& rng) {
 
 }  // namespace detail
 
+inline std::vector<std::size_t> dynamicEdges(const Workload& w) {
+  std::vector<std::size_t> indices;
+  for (std::size_t i = 0; i < w.edges.size(); ++i) {
+    if (w.edges[i].dynamic) indices.push_back(i);
+  }
+  return indices;
+}
+
+// Gives `subject` (anything with set(edge, utime, pose, is_static)) every static edge, then
+// every dynamic edge's samples in time order, a round of all edges at a time.
+template <class Subject>
+void fill(Subject& subject, const Workload& w) {
+  for (std::size_t i = 0; i < w.edges.size(); ++i) {
+    if (!w.edges[i].dynamic) subject.set(i, w.oldest_common, w.edges[i].samples[0], true);
+  }
+  const std::vector<std::size_t> dynamic = dynamicEdges(w);
+  for (std::size_t k = 0; k < Workload::kSamples; ++k) {
+    for (std::size_t i : dynamic) subject.set(i, w.stamp(w.edges[i], k), w.edges[i].samples[k]);
+  }
+}
+
 inline Workload makePr2Workload(std::uint64_t seed = 20240601) {
   Workload w;
   std::mt19937_64 rng(seed);
