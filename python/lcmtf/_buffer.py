@@ -15,7 +15,8 @@ class Buffer(_lcmtf.Buffer):
         The wait runs on a thread of its own; the future ends with the TransformStamped or
         with the lookup's exception (TimeoutException once `timeout` seconds have passed).
         `callback(future)`, when given, is called once it has ended, from the thread that
-        ended it (at once, from this one, when the transform is already available).
+        ended it (at once, from this one, when the transform is already available). The
+        interpreter waits for a pending wait at exit, at most its timeout.
         """
         available = self.can_transform(target, source, time)  # bad arguments raise here
         future = concurrent.futures.Future()

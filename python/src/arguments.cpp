@@ -8,6 +8,9 @@ namespace {
 
 // The largest number of seconds whose microseconds fit in a TimePoint.
 constexpr double kMostSeconds = 9.2e12;
+// The longest duration taken, about 31 years: a deadline that far on a clock counting
+// nanoseconds still fits in 64 bits.
+constexpr double kMostDurationSeconds = 1e9;
 
 std::string typeName(py::handle value) { return Py_TYPE(value.ptr())->tp_name; }
 
@@ -97,9 +100,9 @@ TimePoint timePoint(FloatArg value, const char* argument) {
 
 Duration duration(FloatArg value, const char* argument) {
   const double length = number(value, argument);
-  if (!(length >= 0.0 && length <= kMostSeconds)) {
+  if (!(length >= 0.0 && length <= kMostDurationSeconds)) {
     throw py::value_error(std::string(argument) +
-                          " must be a finite number of seconds, not negative; got " +
+                          " must be a number of seconds from 0 to 1e9; got " +
                           std::string(py::repr(py::float_(length))));
   }
   return secondsToDuration(length);

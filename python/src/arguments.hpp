@@ -57,7 +57,7 @@ std::size_t count(IntArg value, const char* argument, std::size_t least,
 double number(FloatArg value, const char* argument);
 /// Seconds since the epoch, 0.0 for the latest; ValueError for NaN, infinity or before 1970.
 TimePoint timePoint(FloatArg value, const char* argument);
-/// A non-negative, finite number of seconds.
+/// A number of seconds from 0 to 1e9.
 Duration duration(FloatArg value, const char* argument);
 /// A sequence or array of `size` finite real numbers.
 Eigen::VectorXd finiteVector(py::handle value, Eigen::Index size, const char* argument);

@@ -47,6 +47,8 @@ CASES = {
                          "timeout"),
     "fixed an int": (on_buffer("lookup_transform", "map", EPOCH, "base", EPOCH, 3), TypeError,
                      "fixed"),
+    "timeout of a century": (on_buffer("can_transform", "map", "base", 0.0, 3.2e9), ValueError,
+                             "timeout"),
     "target time NaN": (on_buffer("can_transform", "map", math.nan, "base", EPOCH, "odom"),
                         ValueError, "target_time"),
     "points of two columns": (on_buffer("transform_points", np.zeros((4, 2)), "base", "map"),

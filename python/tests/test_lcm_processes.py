@@ -90,3 +90,19 @@ def test_cpp_listener_hears_python_broadcasters(udpm_url, program):
     np.testing.assert_allclose(numbers(r"translation \(m\)"), expected[:3, 3], atol=1e-8)
     reported = pose_matrix([0, 0, 0], numbers("quaternion xyzw"))
     np.testing.assert_allclose(reported[:3, :3], expected[:3, :3], atol=1e-8)
+
+
+def test_listener_reports_a_refusal_to_a_python_callable(udpm_url):
+    reports = []
+    buffer = lcmtf.Buffer()
+    with lcmtf.TransformListener(buffer, udpm_url, allowed_authorities=["trusted"],
+                                 reporter=reports.append) as listener, \
+            lcmtf.TransformBroadcaster(udpm_url, authority="intruder") as broadcaster:
+        for _ in range(200):
+            broadcaster.send_transform(lcmtf.TransformStamped("map", "base", time.time()))
+            if reports:
+                break
+            time.sleep(0.01)
+        assert listener.statistics().unauthorized >= 1
+    assert len(reports) == 1 and "'intruder'" in reports[0], reports
+    assert not buffer.frame_exists("base")
