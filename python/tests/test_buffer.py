@@ -15,11 +15,10 @@ def turning_buffer():
     buffer = lcmtf.Buffer()
     for step in range(11):
         t = step / 10
-        buffer.set_transform(
-            lcmtf.TransformStamped("map", "base", EPOCH + t, [2 * t, 0, 0], quaternion(t, [0, 0, 1])),
-            "driver")
-    buffer.set_transform(
-        lcmtf.TransformStamped("base", "camera", 0.0, [0.1, 0.2, 0.5], quaternion(-math.pi / 2, [1, 0, 0])),
+        buffer.set_transform(lcmtf.TransformStamped(
+            "map", "base", EPOCH + t, [2 * t, 0, 0], quaternion(t, [0, 0, 1])), "driver")
+    buffer.set_transform(lcmtf.TransformStamped(
+        "base", "camera", 0.0, [0.1, 0.2, 0.5], quaternion(-math.pi / 2, [1, 0, 0])),
         "mounts", is_static=True)
     return buffer
 
@@ -74,7 +73,8 @@ def test_times_convert_to_and_from_lcm_microseconds():
 def test_can_transform_says_why_not():
     buffer = turning_buffer()
     assert buffer.can_transform("map", "camera", EPOCH + 0.5)
-    assert buffer.can_transform("map", "camera", EPOCH + 0.5, return_debug_tuple=True) == (True, "")
+    assert buffer.can_transform("map", "camera", EPOCH + 0.5, return_debug_tuple=True) == (
+        True, "")
     ok, why = buffer.can_transform("map", "camera", EPOCH + 2.0, return_debug_tuple=True)
     assert not ok and "extrapolation into the future" in why
     assert buffer.can_transform("map", "nowhere") is False
@@ -97,7 +97,8 @@ def test_refused_samples_are_counted_not_stored():
     same = lcmtf.TransformStamped("a", "a", EPOCH)
     far_from_unit = lcmtf.TransformStamped("a", "b", EPOCH, rotation=(0, 0, 0, 2))
     assert buffer.set_transform(same, "test") is False
-    assert buffer.set_transforms([far_from_unit, lcmtf.TransformStamped("a", "c", EPOCH)], "test") == 1
+    batch = [far_from_unit, lcmtf.TransformStamped("a", "c", EPOCH)]
+    assert buffer.set_transforms(batch, "test") == 1
     rejected = buffer.statistics().rejected
     assert sum(rejected.values()) == 2 and rejected["frame is its own parent"] == 1
     assert sorted(buffer.frames()) == ["a", "c"]

@@ -121,12 +121,14 @@ def functions():
             yield node.name, getattr(lcmtf, node.name), STUB.body
     for class_name, node in STUB_CLASSES.items():
         for member in stub_members(node):
-            runtime = inspect.getattr_static(getattr(lcmtf, class_name), member, None)
+            runtime_class = getattr(lcmtf, class_name)
+            runtime = inspect.getattr_static(runtime_class, member, None)
             if callable(runtime) and not isinstance(runtime, property) and member != "__exit__":
-                yield f"{class_name}.{member}", getattr(getattr(lcmtf, class_name), member), node.body
+                yield f"{class_name}.{member}", getattr(runtime_class, member), node.body
 
 
-@pytest.mark.parametrize("name, function, body", functions(), ids=lambda v: v if isinstance(v, str) else "")
+@pytest.mark.parametrize("name, function, body", functions(),
+                         ids=lambda value: value if isinstance(value, str) else "")
 def test_each_function_takes_the_parameters_its_stub_declares(name, function, body):
     expected = stub_signatures(name.rpartition(".")[2], body)
     actual = runtime_signatures(function)
