@@ -1,5 +1,5 @@
-// BufferCore over a PR2-scale workload, and ROS tf2's BufferCore on the same data when built
-// with LCMTF_BENCH_WITH_TF2.
+// BufferCore over four tree shapes (tree_shapes.hpp), and ROS tf2's BufferCore on the same data
+// when built with LCMTF_BENCH_WITH_TF2.
 #include <benchmark/benchmark.h>
 #include <malloc.h>
 
@@ -13,9 +13,10 @@
 #include <thread>
 #include <vector>
 
-#include "bench_summary.hpp"
+#include "buffer_core_summary.hpp"
 #include "lcmtf_subject.hpp"
-#include "pr2_workload.hpp"
+#include "memory_latency.hpp"
+#include "tree_shapes.hpp"
 #ifdef LCMTF_BENCH_WITH_TF2
 #include "tf2_subject.hpp"
 #endif
@@ -29,22 +30,27 @@ constexpr auto kConcurrentWindow = std::chrono::milliseconds(400);
 constexpr int kConcurrentRounds = 5;
 constexpr int kRounds = 3;
 
-const Workload& workload() {
-  static const Workload w = makePr2Workload();
-  return w;
+const std::vector<Workload>& workloads() {
+  static const std::vector<Workload> all = {makePr2Workload(), makeDeepChainWorkload(),
+                                            makeWideWorkload(), makeForestWorkload()};
+  return all;
 }
 
+const Workload& workload(std::size_t shape) { return workloads()[shape]; }
+
 template <class Subject>
-std::unique_ptr<Subject> makeFilled() {
-  auto subject = std::make_unique<Subject>(workload());
-  fill(*subject, workload());
+std::unique_ptr<Subject> makeFilled(const Workload& w) {
+  auto subject = std::make_unique<Subject>(w);
+  fill(*subject, w);
+  subject->resolveHandles();
   return subject;
 }
 
 template <class Subject>
-const Subject& sharedFilled() {
-  static const std::unique_ptr<Subject> subject = makeFilled<Subject>();
-  return *subject;
+const Subject& sharedFilled(std::size_t shape) {
+  static std::vector<std::unique_ptr<Subject>> filled(workloads().size());
+  if (!filled[shape]) filled[shape] = makeFilled<Subject>(workload(shape));
+  return *filled[shape];
 }
 
 std::size_t heapInUse() {
@@ -55,25 +61,53 @@ std::size_t heapInUse() {
 // In-order inserts of the next sample of each dynamic edge in turn, so every insert also prunes
 // the edge's oldest sample. The buffer and the cursor persist across runs to stay in order.
 template <class Subject>
-void insertBench(benchmark::State& state) {
-  static const std::unique_ptr<Subject> subject = makeFilled<Subject>();
-  static const std::vector<std::size_t> dynamic = dynamicEdges(workload());
-  static std::size_t position = 0;
-  static std::size_t step = Workload::kSamples;
-  const Workload& w = workload();
+void insertBench(benchmark::State& state, std::size_t shape) {
+  struct Cursor {
+    std::unique_ptr<Subject> subject;
+    std::vector<std::size_t> dynamic;
+    std::size_t position = 0;
+    std::size_t step = 0;
+  };
+  static std::vector<Cursor> cursors(workloads().size());
+  const Workload& w = workload(shape);
+  Cursor& cursor = cursors[shape];
+  if (!cursor.subject) {
+    cursor.subject = makeFilled<Subject>(w);
+    cursor.dynamic = dynamicEdges(w);
+    cursor.step = w.samples;
+  }
   for (auto _ : state) {
-    const Edge& edge = w.edges[dynamic[position]];
-    subject->set(dynamic[position], w.stamp(edge, step), edge.samples[step % Workload::kSamples]);
-    if (++position == dynamic.size()) {
-      position = 0;
-      ++step;
+    const std::size_t index = cursor.dynamic[cursor.position];
+    const Edge& edge = w.edges[index];
+    cursor.subject->set(index, w.stamp(edge, cursor.step), edge.samples[cursor.step % w.samples]);
+    if (++cursor.position == cursor.dynamic.size()) {
+      cursor.position = 0;
+      ++cursor.step;
     }
   }
 }
 
+// The first sample of every edge into an empty buffer, each one bringing a new frame.
+template <class Subject>
+void addFramesBench(benchmark::State& state, std::size_t shape) {
+  const Workload& w = workload(shape);
+  Subject subject(w);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Edge& edge = w.edges[i];
+    if (edge.dynamic) {
+      subject.set(i, w.stamp(edge, 0), edge.samples[0]);
+    } else {
+      subject.set(i, w.oldest_common, edge.samples[0], true);
+    }
+    ++i;
+  }
+}
+
 template <class Subject, class Lookup>
-void lookupBench(benchmark::State& state, const std::vector<Query>& queries, Lookup lookup) {
-  const Subject& subject = sharedFilled<Subject>();
+void lookupBench(benchmark::State& state, std::size_t shape, const std::vector<Query>& queries,
+                 Lookup lookup) {
+  const Subject& subject = sharedFilled<Subject>(shape);
   std::size_t i = 0;
   for (auto _ : state) {
     auto result = lookup(subject, queries[i]);
@@ -83,15 +117,15 @@ void lookupBench(benchmark::State& state, const std::vector<Query>& queries, Loo
 }
 
 template <class Subject>
-void memoryBench(benchmark::State& state) {
-  const Workload& w = workload();
+void memoryBench(benchmark::State& state, std::size_t shape) {
+  const Workload& w = workload(shape);
   for (auto _ : state) {
     Subject subject(w);
     const std::size_t before = heapInUse();
     fill(subject, w);
-    const std::size_t after = heapInUse();
-    state.counters["bytes_per_sample"] =
-        static_cast<double>(after - before) / static_cast<double>(w.storedSamples());
+    const auto bytes = static_cast<double>(heapInUse() - before);
+    state.counters["bytes_per_sample"] = bytes / static_cast<double>(w.storedSamples());
+    state.counters["bytes_per_frame"] = bytes / static_cast<double>(w.frameCount());
   }
 }
 
@@ -100,13 +134,13 @@ void memoryBench(benchmark::State& state) {
 template <class Subject>
 void concurrentBench(benchmark::State& state) {
   using Clock = std::chrono::steady_clock;
-  const Workload& w = workload();
+  const Workload& w = workload(0);
   const auto readers = static_cast<std::size_t>(state.range(0));
   for (auto _ : state) {
-    const std::unique_ptr<Subject> subject = makeFilled<Subject>();
+    const std::unique_ptr<Subject> subject = makeFilled<Subject>(w);
     std::vector<std::size_t> written;
     for (std::size_t i = 0; i < kWriterFrames; ++i) {
-      written.push_back(subject->addEdge(w.names[i * 7 % Workload::kFrames],
+      written.push_back(subject->addEdge(w.names[i * 7 % w.frameCount()],
                                          "writer_" + std::to_string(i) + "_link"));
     }
     std::atomic<bool> stop{false};
@@ -148,12 +182,17 @@ void concurrentBench(benchmark::State& state) {
   }
 }
 
+std::string benchName(const char* library, std::size_t shape, const char* kind) {
+  return std::string(library) + "/" + workload(shape).shape + "/" + kind;
+}
+
 template <class Subject, class Lookup>
-void addLookup(const char* kind, const std::vector<Query>& queries, Lookup lookup) {
-  const std::string name = std::string(Subject::kName) + "/" + kind;
-  benchmark::RegisterBenchmark(name.c_str(), [&queries, lookup](benchmark::State& state) {
-    lookupBench<Subject>(state, queries, lookup);
-  });
+void addLookup(std::size_t shape, const char* kind, const std::vector<Query>& queries,
+               Lookup lookup) {
+  benchmark::RegisterBenchmark(benchName(Subject::kName, shape, kind).c_str(),
+                               [shape, &queries, lookup](benchmark::State& state) {
+                                 lookupBench<Subject>(state, shape, queries, lookup);
+                               });
 }
 
 // The benchmarks timed call by call, one kind at a time so that both libraries' runs of a
@@ -163,42 +202,45 @@ constexpr Timed kTimedKinds[] = {Timed::kInsert,  Timed::kRandom,     Timed::kLa
                                  Timed::kDeepest, Timed::kTimeTravel, Timed::kCanTransform};
 
 template <class Subject>
-void registerTimed(Timed kind) {
-  const Workload& w = workload();
+void registerTimed(std::size_t shape, Timed kind) {
+  const Workload& w = workload(shape);
   switch (kind) {
     case Timed::kInsert:
-      benchmark::RegisterBenchmark((std::string(Subject::kName) + "/insert").c_str(),
-                                   insertBench<Subject>);
+      benchmark::RegisterBenchmark(benchName(Subject::kName, shape, "insert").c_str(),
+                                   [shape](benchmark::State& state) {
+                                     insertBench<Subject>(state, shape);
+                                   });
       break;
     case Timed::kRandom:
-      addLookup<Subject>("lookup_random", w.random_pairs,
+      addLookup<Subject>(shape, "lookup_random", w.random_pairs,
                          [](const Subject& s, const Query& q) { return s.lookup(q); });
       break;
     case Timed::kLatest:
-      addLookup<Subject>("lookup_latest", w.random_pairs,
+      addLookup<Subject>(shape, "lookup_latest", w.random_pairs,
                          [](const Subject& s, const Query& q) { return s.lookupLatest(q); });
       break;
     case Timed::kDeepest:
-      addLookup<Subject>("lookup_deepest", w.deepest_chain,
+      addLookup<Subject>(shape, "lookup_deepest", w.deepest_chain,
                          [](const Subject& s, const Query& q) { return s.lookup(q); });
       break;
     case Timed::kTimeTravel:
-      addLookup<Subject>("lookup_time_travel", w.random_pairs,
+      addLookup<Subject>(shape, "lookup_time_travel", w.random_pairs,
                          [](const Subject& s, const Query& q) { return s.lookupTimeTravel(q); });
       break;
     case Timed::kCanTransform:
-      addLookup<Subject>("can_transform", w.random_pairs,
+      addLookup<Subject>(shape, "can_transform", w.random_pairs,
                          [](const Subject& s, const Query& q) { return s.canTransform(q); });
       break;
   }
 }
 
 // Ways to look up that only lcmtf has.
-void registerHandleLookups() {
+void registerHandleLookups(std::size_t shape) {
+  const std::vector<Query>& pairs = workload(shape).random_pairs;
   addLookup<LcmtfSubject>(
-      "lookup_by_handle", workload().random_pairs,
+      shape, "lookup_by_handle", pairs,
       [](const LcmtfSubject& s, const Query& q) { return s.lookupByHandle(q); });
-  addLookup<LcmtfSubject>("lookup_by_handle_into", workload().random_pairs,
+  addLookup<LcmtfSubject>(shape, "lookup_by_handle_into", pairs,
                           [](const LcmtfSubject& s, const Query& q) {
                             static thread_local lcmtf::TransformStamped result;
                             s.lookupByHandleInto(q, result);
@@ -207,17 +249,26 @@ void registerHandleLookups() {
 }
 
 template <class Subject>
-void registerMemory() {
-  benchmark::RegisterBenchmark((std::string(Subject::kName) + "/memory").c_str(),
-                               memoryBench<Subject>)
+void registerMemory(std::size_t shape) {
+  benchmark::RegisterBenchmark(
+      benchName(Subject::kName, shape, "memory").c_str(),
+      [shape](benchmark::State& state) { memoryBench<Subject>(state, shape); })
       ->Iterations(1)
       ->Unit(benchmark::kMillisecond);
+}
+
+template <class Subject>
+void registerAddFrames(std::size_t shape) {
+  benchmark::RegisterBenchmark(
+      benchName(Subject::kName, shape, "add_frames").c_str(),
+      [shape](benchmark::State& state) { addFramesBench<Subject>(state, shape); })
+      ->Iterations(static_cast<benchmark::IterationCount>(workload(shape).edges.size()));
 }
 
 // One window with one reader, then one with two.
 template <class Subject>
 void registerThreads() {
-  benchmark::RegisterBenchmark((std::string(Subject::kName) + "/lookups_with_writer").c_str(),
+  benchmark::RegisterBenchmark(benchName(Subject::kName, 0, "lookups_with_writer").c_str(),
                                concurrentBench<Subject>)
       ->ArgName("readers")
       ->Arg(1)
@@ -227,32 +278,34 @@ void registerThreads() {
       ->Unit(benchmark::kMillisecond);
 }
 
-void printWorkload() {
-  const Workload& w = workload();
-  double edges = 0;
-  double dynamic = 0;
-  for (const Query& q : w.random_pairs) {
-    const auto [total, moving] = w.pathLength(q.target, q.source);
-    edges += static_cast<double>(total);
-    dynamic += static_cast<double>(moving);
+void printWorkloads() {
+  for (const Workload& w : workloads()) {
+    double edges = 0;
+    double dynamic = 0;
+    for (const Query& q : w.random_pairs) {
+      const auto [total, moving] = w.pathLength(q.target, q.source);
+      edges += static_cast<double>(total);
+      dynamic += static_cast<double>(moving);
+    }
+    const auto n = static_cast<double>(w.random_pairs.size());
+    const auto deepest = w.pathLength(0, w.deepest);
+    std::printf(
+        "%-10s %6zu frames, %5zu dynamic edges at 100 Hz with %4zu samples each, the rest "
+        "static; deepest frame %2zu edges below its root (%2zu dynamic); random paths %5.2f "
+        "edges, %5.2f dynamic\n",
+        w.shape.c_str(), w.frameCount(), w.dynamicEdgeCount(), w.samples, deepest.first,
+        deepest.second, edges / n, dynamic / n);
   }
-  const auto n = static_cast<double>(w.random_pairs.size());
-  const auto deepest = w.pathLength(0, w.deepest);
-  std::printf(
-      "PR2-scale workload: %zu frames, %zu dynamic edges at 100 Hz with %zu samples each, the "
-      "rest static; deepest frame %zu edges from the root (%zu dynamic)\n"
-      "random paths: %.2f edges on average, %.2f of them dynamic\n\n",
-      w.names.size(), w.dynamicEdgeCount(), Workload::kSamples, deepest.first, deepest.second,
-      edges / n, dynamic / n);
+  std::printf("\n");
 }
 
 #ifdef LCMTF_BENCH_WITH_TF2
 // The largest difference between the two libraries' answers, as a sanity check that both run
 // the same workload.
-void printAgreement() {
-  const Workload& w = workload();
-  const LcmtfSubject& ours = sharedFilled<LcmtfSubject>();
-  const Tf2Subject& theirs = sharedFilled<Tf2Subject>();
+void printAgreement(std::size_t shape) {
+  const Workload& w = workload(shape);
+  const LcmtfSubject& ours = sharedFilled<LcmtfSubject>(shape);
+  const Tf2Subject& theirs = sharedFilled<Tf2Subject>(shape);
   double translation = 0;
   double rotation = 0;
   auto compare = [&](const Pose& a, const Pose& b) {
@@ -271,9 +324,9 @@ void printAgreement() {
     compare(ours.pose(ours.lookup(deep)), theirs.pose(theirs.lookup(deep)));
   }
   std::printf(
-      "lcmtf vs tf2 on %zu queries of each lookup kind: max difference %.2e m in translation, "
-      "%.2e in quaternion coefficients\n\n",
-      Workload::kQueries, translation, rotation);
+      "%-10s lcmtf vs tf2 on %zu queries of each lookup kind: max difference %.2e m in "
+      "translation, %.2e in quaternion coefficients\n",
+      w.shape.c_str(), Workload::kQueries, translation, rotation);
 }
 #endif
 
@@ -282,28 +335,48 @@ void printAgreement() {
 
 int main(int argc, char** argv) {
   using namespace bench;
+  // A run narrowed to some benchmarks (as when profiling one) skips the agreement check, which
+  // fills every shape in both libraries.
+  bool whole_run = true;
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]).rfind("--benchmark_filter", 0) == 0) whole_run = false;
+  }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  printWorkload();
+  printWorkloads();
+  std::vector<std::string> shapes;
+  for (std::size_t shape = 0; shape < workloads().size(); ++shape) {
+    shapes.push_back(workload(shape).shape);
 #ifdef LCMTF_BENCH_WITH_TF2
-  printAgreement();
+    if (whole_run) printAgreement(shape);
 #endif
+  }
+  std::printf("\n");
   // Each kind runs kRounds times, the two libraries taking turns, and the summary takes each
   // one's fastest round: a burst of load from elsewhere on the machine then slows one round,
-  // not one library.
+  // not one library. The spread over the rounds is printed beside it.
   for (int round = 0; round < kRounds; ++round) {
-    for (const Timed kind : kTimedKinds) {
-      registerTimed<LcmtfSubject>(kind);
+    for (std::size_t shape = 0; shape < workloads().size(); ++shape) {
+      for (const Timed kind : kTimedKinds) {
+        registerTimed<LcmtfSubject>(shape, kind);
 #ifdef LCMTF_BENCH_WITH_TF2
-      registerTimed<Tf2Subject>(kind);
+        registerTimed<Tf2Subject>(shape, kind);
 #endif
+      }
+      registerHandleLookups(shape);
     }
-    registerHandleLookups();
-  }
-  registerMemory<LcmtfSubject>();
+    const std::size_t forest = workloads().size() - 1;
+    registerAddFrames<LcmtfSubject>(forest);
 #ifdef LCMTF_BENCH_WITH_TF2
-  registerMemory<Tf2Subject>();
+    registerAddFrames<Tf2Subject>(forest);
 #endif
+  }
+  for (std::size_t shape = 0; shape < workloads().size(); ++shape) {
+    registerMemory<LcmtfSubject>(shape);
+#ifdef LCMTF_BENCH_WITH_TF2
+    registerMemory<Tf2Subject>(shape);
+#endif
+  }
   // Likewise the windows with readers and a writer: one reader and two take turns, and the
   // summary takes each one's best window.
   for (int round = 0; round < kConcurrentRounds; ++round) {
@@ -314,7 +387,7 @@ int main(int argc, char** argv) {
   }
   RecordingReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  printSummary(reporter);
+  printSummary(reporter, shapes, memoryLatencyNs());
   benchmark::Shutdown();
   return 0;
 }

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "lcmtf/buffer_core.hpp"
-#include "pr2_workload.hpp"
+#include "tree_workload.hpp"
 
 namespace bench {
 
@@ -15,6 +15,11 @@ class LcmtfSubject {
 
   explicit LcmtfSubject(const Workload& workload) : names_(workload.names) {
     for (const Edge& edge : workload.edges) addEdge(names_[edge.parent], names_[edge.child]);
+  }
+
+  /// Resolves every frame's handle, once the frames are there (resolving makes a frame).
+  void resolveHandles() {
+    handles_.clear();
     for (const std::string& name : names_) handles_.push_back(buffer_.resolveFrame(name));
   }
 
@@ -42,7 +47,7 @@ class LcmtfSubject {
   }
   lcmtf::TransformStamped lookupTimeTravel(const Query& q) const {
     return buffer_.lookupTransform(names_[q.target], lcmtf::fromUtime(q.time), names_[q.source],
-                                   lcmtf::fromUtime(q.other_time), names_[0]);
+                                   lcmtf::fromUtime(q.other_time), names_[q.fixed]);
   }
   bool canTransform(const Query& q) const {
     return buffer_.canTransform(names_[q.target], names_[q.source], lcmtf::fromUtime(q.time));

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "lcmtf_subject.hpp"
-#include "pr2_workload.hpp"
+#include "tree_shapes.hpp"
 
 namespace {
 
@@ -40,8 +40,8 @@ void printQueries(const char* name, const std::vector<Query>& queries) {
   std::printf("\"%s\": [", name);
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const Query& q = queries[i];
-    std::printf("%s[%zu, %zu, %lld, %lld]", i == 0 ? "" : ", ", q.target, q.source,
-                static_cast<long long>(q.time), static_cast<long long>(q.other_time));
+    std::printf("%s[%zu, %zu, %lld, %lld, %zu]", i == 0 ? "" : ", ", q.target, q.source,
+                static_cast<long long>(q.time), static_cast<long long>(q.other_time), q.fixed);
   }
   std::printf("]");
 }

@@ -86,21 +86,21 @@ def lookup_table(lcmtf, workload, tf2_buffer, tf2_time):
     random, deepest = workload["random_pairs"], workload["deepest_chain"]
     seconds = lcmtf.from_utime
     kinds = {
-        "lookup_random": [(names[t], names[s], seconds(u)) for t, s, u, _ in random],
-        "lookup_latest": [(names[t], names[s], 0.0) for t, s, _, _ in random],
-        "lookup_deepest": [(names[t], names[s], seconds(u)) for t, s, u, _ in deepest],
-        "lookup_time_travel": [(names[t], seconds(u), names[s], seconds(v), names[0])
-                               for t, s, u, v in random],
+        "lookup_random": [(names[t], names[s], seconds(u)) for t, s, u, _, _ in random],
+        "lookup_latest": [(names[t], names[s], 0.0) for t, s, _, _, _ in random],
+        "lookup_deepest": [(names[t], names[s], seconds(u)) for t, s, u, _, _ in deepest],
+        "lookup_time_travel": [(names[t], seconds(u), names[s], seconds(v), names[f])
+                               for t, s, u, v, f in random],
     }
     tf2_kinds = {}
     if tf2_buffer is not None:
         zero = tf2_time(0)
         tf2_kinds = {
-            "lookup_random": [(names[t], names[s], tf2_time(u)) for t, s, u, _ in random],
-            "lookup_latest": [(names[t], names[s], zero) for t, s, _, _ in random],
-            "lookup_deepest": [(names[t], names[s], tf2_time(u)) for t, s, u, _ in deepest],
-            "lookup_time_travel": [(names[t], tf2_time(u), names[s], tf2_time(v), names[0])
-                                   for t, s, u, v in random],
+            "lookup_random": [(names[t], names[s], tf2_time(u)) for t, s, u, _, _ in random],
+            "lookup_latest": [(names[t], names[s], zero) for t, s, _, _, _ in random],
+            "lookup_deepest": [(names[t], names[s], tf2_time(u)) for t, s, u, _, _ in deepest],
+            "lookup_time_travel": [(names[t], tf2_time(u), names[s], tf2_time(v), names[f])
+                                   for t, s, u, v, f in random],
         }
     return kinds, tf2_kinds
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "pr2_workload.hpp"
+#include "tree_workload.hpp"
 
 namespace bench {
 
@@ -40,6 +40,8 @@ class Tf2Subject {
     buffer_.setTransform(message, authority_, is_static);
   }
 
+  void resolveHandles() {}
+
   geometry_msgs::TransformStamped lookup(const Query& q) const {
     return buffer_.lookupTransform(names_[q.target], names_[q.source], rosTime(q.time));
   }
@@ -48,7 +50,7 @@ class Tf2Subject {
   }
   geometry_msgs::TransformStamped lookupTimeTravel(const Query& q) const {
     return buffer_.lookupTransform(names_[q.target], rosTime(q.time), names_[q.source],
-                                   rosTime(q.other_time), names_[0]);
+                                   rosTime(q.other_time), names_[q.fixed]);
   }
   bool canTransform(const Query& q) const {
     return buffer_.canTransform(names_[q.target], names_[q.source], rosTime(q.time));

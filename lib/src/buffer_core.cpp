@@ -182,17 +182,17 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
         // A frame new to the buffer has nothing below it: only its own chain is new.
         continueStaticChain(record, frames_[parent_id], value);
       } else {
-        updateStaticChains();
+        computeStaticChains();
       }
     }
   } else {
     const FrameId parent_before = record.cache.newestParent();
     const detail::InsertOutcome outcome =
         record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_,
-                            anchorOf(frames_, parent_id), most_samples_per_edge_);
+                            most_samples_per_edge_);
     if (outcome == detail::InsertOutcome::kReplaced) ++statistics_.replaced;
     if (outcome == detail::InsertOutcome::kAddedDroppingOldest) ++statistics_.dropped_for_room;
-    if (was_static) updateStaticChains();
+    if (was_static) computeStaticChains();
     if (was_static || record.cache.newestParent() != parent_before) noteShapeChange(child_id);
   }
   if (record.cache.changesParent() && !changed_parent) ++parent_changing_edges_;

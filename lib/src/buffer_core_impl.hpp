@@ -137,9 +137,8 @@ class BufferCore::Impl {
   LookupFailure climb(FrameId target, FrameId source, std::int64_t stamp, bool through_missing_data,
                       std::vector<PathEdge>& source_edges, std::vector<PathEdge>& target_edges,
                       FrameId* ancestor) const;
-  /// Recomputes every frame's static_top after a static edge changed, and the anchored samples
-  /// of the edges into frames whose chain changed (exclusive lock).
-  void updateStaticChains();
+  /// Recomputes every frame's static_top and the chain up to it after a static edge changed
+  /// (exclusive lock).
   void computeStaticChains();
   /// Brings the root paths up to date (exclusive lock): rebuilt when a frame they know has
   /// changed its edge, extended when only new frames have come.
@@ -195,7 +194,7 @@ class BufferCore::Impl {
   // limit, every lookup takes the walk, which checks it.
   std::int64_t max_gap_ = 0;
   detail::NameArena names_;  // stable storage behind FrameRecord::name
-  std::vector<FrameRecord> frames_;
+  FrameTable frames_;
   detail::FrameNameIndex ids_;
   RootPaths root_paths_;
   bool root_paths_stale_ = false;
@@ -217,7 +216,7 @@ class BufferCore::Impl {
 };
 
 /// The frames of the loop above `start` in the tree at `stamp` (0: as of the newest samples).
-std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId start,
+std::vector<FrameId> findLoop(const FrameTable& frames, FrameId start,
                               std::int64_t stamp, bool latest);
 
 /// One leading '/' is not part of a frame's name.

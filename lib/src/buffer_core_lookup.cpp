@@ -23,6 +23,7 @@ struct WalkScratch {
   std::vector<detail::PlanStep> steps;
   std::vector<detail::InterpolationTask> tasks;
   std::vector<detail::TransformRoom> rooms;
+  std::vector<detail::Anchoring> anchorings;
   std::vector<const Transform*> values;
 };
 thread_local WalkScratch scratch;
@@ -30,7 +31,7 @@ thread_local WalkScratch scratch;
 }  // namespace
 
 // Walks up from `start` for more steps than there are frames to find the frames of the loop.
-std::vector<FrameId> findLoop(const std::vector<FrameRecord>& frames, FrameId start,
+std::vector<FrameId> findLoop(const FrameTable& frames, FrameId start,
                               std::int64_t stamp, bool latest) {
   std::vector<FrameId> visited;
   FrameId frame = start;
@@ -49,7 +50,7 @@ namespace {
 
 // The edge up from `frame`, as it was at `stamp` (0: as of its newest sample); its parent is
 // kNoFrame at a root.
-void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t stamp,
+void stepUp(const FrameTable& frames, FrameId frame, std::int64_t stamp,
             PathEdge& edge) {
   const detail::TimeCache& cache = frames[frame].cache;
   edge.child = frame;
@@ -65,22 +66,23 @@ void stepUp(const std::vector<FrameRecord>& frames, FrameId frame, std::int64_t 
 
 // The value of the path the walk found at `stamp`, by the same sampler and product as the
 // quick lookups.
-Transform pathValue(const std::vector<FrameRecord>& frames, WalkScratch& s, std::int64_t stamp) {
+Transform pathValue(const FrameTable& frames, WalkScratch& s, std::int64_t stamp) {
   const std::size_t count = s.source_edges.size() + s.target_edges.size();
   s.steps.clear();
   for (const auto* edges : {&s.source_edges, &s.target_edges}) {
     for (const PathEdge& edge : *edges) {
       const detail::TimeCache* cache = edge.isDynamic() ? &frames[edge.child].cache : nullptr;
-      s.steps.push_back({cache, edge.fixed, false, false, detail::TimeCache::kNoHint});
+      s.steps.push_back({cache, edge.fixed, nullptr, false, detail::TimeCache::kNoHint});
     }
   }
   if (s.tasks.size() < count) {
     s.tasks.resize(count);
     s.rooms.resize(count);
+    s.anchorings.resize(count);
     s.values.resize(count);
   }
   const detail::PathPlan plan{s.steps.data(), s.source_edges.size(), s.target_edges.size(), stamp};
-  detail::PathSampler sampler(s.tasks.data(), s.rooms.data());
+  detail::PathSampler sampler({s.tasks.data(), s.rooms.data(), s.anchorings.data()});
   sampler.sample(plan, s.values.data());
   sampler.run();
   Transform target_T_source;
@@ -89,7 +91,7 @@ Transform pathValue(const std::vector<FrameRecord>& frames, WalkScratch& s, std:
 }
 
 // A dynamic edge without data at `stamp`, as a failure.
-LookupFailure missingData(const std::vector<FrameRecord>& frames, const PathEdge& edge,
+LookupFailure missingData(const FrameTable& frames, const PathEdge& edge,
                           std::int64_t stamp) {
   const detail::TimeCache& cache = frames[edge.child].cache;
   LookupFailure failure;
@@ -104,7 +106,7 @@ LookupFailure missingData(const std::vector<FrameRecord>& frames, const PathEdge
 }
 
 // The newest stamp every dynamic edge of the walk has data at; 0 when all are static.
-std::int64_t commonNewest(const std::vector<FrameRecord>& frames,
+std::int64_t commonNewest(const FrameTable& frames,
                           const std::vector<PathEdge>& source_edges,
                           const std::vector<PathEdge>& target_edges) {
   CommonNewest common;
@@ -365,35 +367,6 @@ LookupFailure BufferCore::Impl::resolveAll(const std::string& target, const std:
     return failure;
   }
   return resolve(fixed, "fixed", fixed_id);
-}
-
-void BufferCore::Impl::updateStaticChains() {
-  struct Chain {
-    FrameId top;
-    Transform top_T_frame;
-  };
-  std::vector<Chain> before;
-  before.reserve(frames_.size());
-  for (const FrameRecord& record : frames_) {
-    before.push_back({record.static_top, record.static_top_T_frame});
-  }
-  computeStaticChains();
-  // Edges into a frame whose chain changed hold samples anchored to the old chain.
-  std::vector<char> changed(frames_.size(), 0);
-  for (FrameId frame = 1; frame < frames_.size(); ++frame) {
-    const FrameRecord& record = frames_[frame];
-    const Chain& old = before[frame];
-    changed[frame] =
-        old.top != record.static_top ||
-        old.top_T_frame.translation != record.static_top_T_frame.translation ||
-        old.top_T_frame.rotation.coeffs() != record.static_top_T_frame.rotation.coeffs();
-  }
-  auto anchor = [this](FrameId parent) { return anchorOf(frames_, parent); };
-  for (FrameRecord& record : frames_) {
-    detail::TimeCache& cache = record.cache;
-    if (cache.isStatic() || cache.empty()) continue;
-    if (!cache.hasSingleParent() || changed[cache.newestParent()]) cache.reanchor(anchor);
-  }
 }
 
 void BufferCore::Impl::computeStaticChains() {

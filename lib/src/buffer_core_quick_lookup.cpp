@@ -44,17 +44,18 @@ MeetingPoint meetingPoint(const RootPaths::Path& up_from_source,
     --target_count;
   }
   MeetingPoint meeting{source_count, target_count,
-                       source_count > 0 && up_from_source.steps[source_count - 1].anchored,
-                       target_count > 0 && up_from_target.steps[target_count - 1].anchored};
+                       source_count > 0 && up_from_source.steps[source_count - 1].anchored(),
+                       target_count > 0 && up_from_target.steps[target_count - 1].anchored()};
   if (source_count == 0 || target_count == 0) return meeting;
   const RootStep& last_source = up_from_source.steps[source_count - 1];
   const RootStep& last_target = up_from_target.steps[target_count - 1];
-  if (last_source.anchored && last_target.anchored && last_source.parent == last_target.parent) {
+  if (last_source.anchored() && last_target.anchored() &&
+      last_source.parent == last_target.parent) {
     meeting.source_anchored = meeting.target_anchored = false;
-  } else if (last_source.anchored && last_source.parent == target) {
+  } else if (last_source.anchored() && last_source.parent == target) {
     meeting.source_anchored = false;
     meeting.target_count = 0;
-  } else if (last_target.anchored && last_target.parent == source) {
+  } else if (last_target.anchored() && last_target.parent == source) {
     meeting.target_anchored = false;
     meeting.source_count = 0;
   }
@@ -70,16 +71,16 @@ bool takeSteps(const RootStep* steps, std::size_t count, bool last_anchored, std
   for (std::size_t i = 0; i < count; ++i) {
     const RootStep& step = steps[i];
     PlanStep& quick = out[i];
-    quick = PlanStep{step.cache, step.fixed, false, true, detail::TimeCache::kNoHint};
+    quick = PlanStep{step.cache, step.fixed, nullptr, true, detail::TimeCache::kNoHint};
     if (!step.cache) continue;
     const detail::TimeCache& cache = *step.cache;
-    quick.anchored = i + 1 == count ? last_anchored : step.anchored;
+    if (i + 1 < count || last_anchored) quick.anchor = step.anchor;
     if (stamp == 0) {
       common_newest.add(cache.newestStamp());
       continue;
     }
     if (stamp < cache.singleParentFrom() || stamp > cache.newestStamp()) return false;
-    if (prefetch) quick.hint = cache.prefetch(stamp, quick.anchored);
+    if (prefetch) quick.hint = cache.prefetch(stamp);
   }
   return true;
 }
@@ -109,7 +110,7 @@ bool mayDifferAbove(const RootPaths::Path& path, std::size_t from, std::int64_t 
 // plan's `at` then gives), starting the loads of the samples when `prefetch`; false when the
 // root paths cannot answer. `parent_changes` says whether any edge's history holds more than
 // one parent.
-bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frames, FrameId target,
+bool planPath(const RootPaths& root_paths, const FrameTable& frames, FrameId target,
               FrameId source, std::int64_t stamp, bool prefetch, bool parent_changes,
               QuickPath& path) {
   RootPaths::Path up_from_source;
@@ -123,7 +124,6 @@ bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frame
   const std::size_t count = meeting.source_count + meeting.target_count;
   if (count > kMostSteps) return false;
   PlanStep* const steps = path.steps;
-  prefetch = prefetch && stamp != 0;
   CommonNewest common_newest;
   if (!takeSteps(up_from_source.steps, meeting.source_count, meeting.source_anchored, stamp,
                  prefetch, steps, common_newest) ||
@@ -134,6 +134,12 @@ bool planPath(const RootPaths& root_paths, const std::vector<FrameRecord>& frame
   std::int64_t at = stamp;
   if (stamp == 0 && common_newest.any_dynamic) {
     at = common_newest.stamp;
+    // The samples near the newest of every step load at once, before any is read.
+    if (prefetch) {
+      for (std::size_t i = 0; i < count; ++i) {
+        if (steps[i].cache) steps[i].cache->prefetchNewest();
+      }
+    }
     for (std::size_t i = 0; i < count; ++i) {
       PlanStep& step = steps[i];
       if (!step.cache) continue;
@@ -158,11 +164,13 @@ double magnitudeOf(const PathPlan& plan, const Transform* const* values) {
   return sum;
 }
 
-// Interpolation tasks and rooms for the steps of `Paths` quick paths.
+// Interpolation tasks, rooms and anchorings for the steps of `Paths` quick paths.
 template <std::size_t Paths>
 struct QuickSamplerRoom {
   detail::InterpolationTask tasks[Paths * kMostSteps];
   detail::TransformRoom rooms[Paths * kMostSteps];
+  detail::Anchoring anchorings[Paths * kMostSteps];
+  detail::SamplerStorage storage() { return {tasks, rooms, anchorings}; }
 };
 
 }  // namespace
@@ -179,7 +187,7 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
   double magnitude = 0.0;
   if (value) {
     QuickSamplerRoom<1> room;
-    detail::PathSampler sampler(room.tasks, room.rooms);
+    detail::PathSampler sampler(room.storage());
     const Transform* values[kMostSteps];
     sampler.sample(path.plan, values);
     sampler.run();
@@ -209,7 +217,7 @@ bool BufferCore::Impl::quickTimeTravel(FrameId target, std::int64_t& target_stam
     return false;
   }
   QuickSamplerRoom<2> room;
-  detail::PathSampler sampler(room.tasks, room.rooms);
+  detail::PathSampler sampler(room.storage());
   const Transform* source_values[kMostSteps];
   const Transform* target_values[kMostSteps];
   sampler.sample(source_path.plan, source_values);

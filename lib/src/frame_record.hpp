@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "lcmtf/transform.hpp"
+#include "stable_vector.hpp"
 #include "time_cache.hpp"
 
 namespace lcmtf {
@@ -24,18 +25,14 @@ struct FrameRecord {
   Transform static_top_T_frame;
 };
 
+/// Every frame's record, indexed by FrameId; records stay where they are as frames are added.
+using FrameTable = detail::StableVector<FrameRecord>;
+
 /// Continues `parent`'s static chain through `record`'s static edge `parent_T_record`.
 inline void continueStaticChain(FrameRecord& record, const FrameRecord& parent,
                                 const Transform& parent_T_record) {
   record.static_top = parent.static_top;
   record.static_top_T_frame = parent.static_top_T_frame * parent_T_record;
-}
-
-/// What anchors the samples of the edges into `frame` (see TimeCache::reanchor): the static
-/// chain above it, or null when there is none.
-inline const Transform* anchorOf(const std::vector<FrameRecord>& frames, FrameId frame) {
-  const FrameRecord& record = frames[frame];
-  return record.static_top != frame ? &record.static_top_T_frame : nullptr;
 }
 
 }  // namespace lcmtf

@@ -5,6 +5,7 @@
 #include <new>
 
 #include "batch_interpolation.hpp"
+#include "compose.hpp"
 #include "path_product.hpp"
 #include "time_cache.hpp"
 
@@ -15,7 +16,8 @@ namespace lcmtf::detail {
 struct PlanStep {
   const TimeCache* cache;  // null for a static step
   const Transform* fixed;  // a static step's value
-  bool anchored;           // sample the edge's anchored values (see TimeCache::reanchor)
+  const Transform* anchor;  // the static chain above the edge's parent, composed onto its value;
+                           // null for none
   bool single_parent;      // every sample the time may fall between has the edge's newest parent
   std::size_t hint;        // where the samples likely are (TimeCache::prefetch), or kNoHint
 };
@@ -37,16 +39,28 @@ struct TransformRoom {
   alignas(Transform) unsigned char bytes[sizeof(Transform)];
 };
 
+/// A step value to compose with the static chain above it once interpolated.
+struct Anchoring {
+  const Transform* anchor;
+  Transform* value;
+};
+
+/// Storage a PathSampler works in: a task, a room and an anchoring for every step sampled.
+struct SamplerStorage {
+  InterpolationTask* tasks;
+  TransformRoom* rooms;
+  Anchoring* anchorings;
+};
+
 /// The values of the steps of one or more plans, with the interpolations they need run in one
-/// batch, in storage the caller gives: a task and a room for every step sampled.
+/// batch, in storage the caller gives.
 class PathSampler {
  public:
-  PathSampler(InterpolationTask* tasks, TransformRoom* rooms) : tasks_(tasks), rooms_(rooms) {}
+  explicit PathSampler(const SamplerStorage& storage) : storage_(storage) {}
 
   /// Points `values` at the value of each of `plan`'s steps, valid once run() has returned.
   void sample(const PathPlan& plan, const Transform** values) {
     const std::size_t count = plan.size();
-    std::size_t task_count = count_;
     for (std::size_t i = 0; i < count; ++i) {
       const PlanStep& step = plan.steps[i];
       if (!step.cache) {
@@ -55,26 +69,37 @@ class PathSampler {
       }
       SampleSpan span;
       if (step.single_parent) {
-        span = step.cache->spanWithin(plan.at, step.hint, step.anchored);
+        span = step.cache->spanWithin(plan.at, step.hint);
       } else {
         step.cache->find(plan.at, span);
       }
-      if (!span.newer) {
+      if (!span.newer && !step.anchor) {
         values[i] = span.older;
         continue;
       }
-      Transform* out = ::new (static_cast<void*>(rooms_[task_count].bytes)) Transform;
-      tasks_[task_count++] = {span.older, span.newer, span.ratio, out, span.arc_squared};
+      Transform* out = ::new (static_cast<void*>(storage_.rooms[rooms_++].bytes)) Transform;
       values[i] = out;
+      if (!span.newer) {
+        *out = composed(*step.anchor, *span.older);
+        continue;
+      }
+      storage_.tasks[tasks_++] = {span.older, span.newer, span.ratio, out};
+      if (step.anchor) storage_.anchorings[anchorings_++] = {step.anchor, out};
     }
-    count_ = task_count;
   }
-  void run() const { interpolateBatch(tasks_, count_); }
+  void run() const {
+    interpolateBatch(storage_.tasks, tasks_);
+    for (std::size_t i = 0; i < anchorings_; ++i) {
+      const Anchoring& anchoring = storage_.anchorings[i];
+      *anchoring.value = composed(*anchoring.anchor, *anchoring.value);
+    }
+  }
 
  private:
-  InterpolationTask* tasks_;
-  TransformRoom* rooms_;
-  std::size_t count_ = 0;
+  SamplerStorage storage_;
+  std::size_t tasks_ = 0;
+  std::size_t rooms_ = 0;
+  std::size_t anchorings_ = 0;
 };
 
 /// The plan's target_T_source from the value of each of its steps (sampled by PathSampler).

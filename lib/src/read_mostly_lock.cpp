@@ -6,6 +6,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace lcmtf::detail {
@@ -28,16 +29,18 @@ void pause() {
 // Spins until `done()` or kLongestSpin has passed; whether `done()`. After a few pauses it
 // yields too, which hands the core to an ordinary thread it waits for on the same core (a
 // real-time thread's yield does not, and it soon sleeps instead).
+// The clock is read only once the pauses are over: most waits end before, and a writer
+// checks every slot, most of them empty, on each lock().
 template <class Done>
 bool spinUntil(Done done) {
   constexpr unsigned kPausesBeforeYielding = 64;
-  const auto give_up = std::chrono::steady_clock::now() + kLongestSpin;
-  for (unsigned spin = 1;; ++spin) {
+  for (unsigned spin = 1; spin < kPausesBeforeYielding; ++spin) {
     if (done()) return true;
-    if (spin < kPausesBeforeYielding) {
-      pause();
-      continue;
-    }
+    pause();
+  }
+  const auto give_up = std::chrono::steady_clock::now() + kLongestSpin;
+  for (;;) {
+    if (done()) return true;
     if (std::chrono::steady_clock::now() > give_up) return false;
     sched_yield();
   }
@@ -58,11 +61,14 @@ void wakeOne(const std::atomic<std::uint32_t>& word) {
 // not initial-exec, so the library can be loaded by dlopen (as a Python extension is).
 constexpr std::size_t kNoSlot = static_cast<std::size_t>(-1);
 thread_local std::size_t thread_slot = kNoSlot;
+// How many threads have taken a slot, so that a writer in a process with few threads checks
+// only the slots they use. A thread counts itself before it first enters a slot, both in the
+// total order of seq_cst operations that lock() reads this in.
+std::atomic<std::size_t> threads_with_slots{0};
 
 std::size_t threadSlot() {
   if (thread_slot == kNoSlot) {
-    static std::atomic<std::size_t> next_thread{0};
-    thread_slot = next_thread.fetch_add(1, std::memory_order_relaxed);
+    thread_slot = threads_with_slots.fetch_add(1, std::memory_order_seq_cst);
   }
   return thread_slot;
 }
@@ -116,7 +122,8 @@ void ReadMostlyLock::waitWhileWriting() const {
 void ReadMostlyLock::lock() {
   pthread_mutex_lock(&writers_);
   writing_.store(1, std::memory_order_seq_cst);
-  for (const Slot& slot : slots_) waitUntilEmpty(slot);
+  const std::size_t used = std::min(kSlots, threads_with_slots.load(std::memory_order_seq_cst));
+  for (std::size_t i = 0; i < used; ++i) waitUntilEmpty(slots_[i]);
 }
 
 void ReadMostlyLock::waitUntilEmpty(const Slot& slot) {

@@ -4,7 +4,7 @@
 
 namespace lcmtf {
 
-RootStep stepFrom(const std::vector<FrameRecord>& frames, FrameId frame) {
+RootStep stepFrom(const FrameTable& frames, FrameId frame) {
   const FrameRecord& record = frames[frame];
   RootStep step;
   step.child = frame;
@@ -22,7 +22,7 @@ RootStep stepFrom(const std::vector<FrameRecord>& frames, FrameId frame) {
   step.parent = step.next = record.cache.newestParent();
   if (step.parent != kNoFrame) {
     step.next = frames[step.parent].static_top;
-    step.anchored = step.next != step.parent;
+    if (step.next != step.parent) step.anchor = &frames[step.parent].static_top_T_frame;
   }
   return step;
 }
@@ -30,18 +30,34 @@ RootStep stepFrom(const std::vector<FrameRecord>& frames, FrameId frame) {
 // Each frame's path is its own step followed by a copy of the path of the frame that step
 // reaches, so frames are settled from the top down: a climb stops at the first frame whose
 // path is known, or at a root, and the frames it passed are filled in on the way back.
-void RootPaths::rebuild(const std::vector<FrameRecord>& frames) {
+void RootPaths::rebuild(const FrameTable& frames) {
   entries_.clear();
-  steps_.clear();
-  built_for_ = frames.data();
+  step_chunks_.clear();
+  last_chunk_size_ = last_chunk_used_ = 0;
+  built_for_ = &frames;
   settleFrom(frames, 1);
 }
 
-void RootPaths::extend(const std::vector<FrameRecord>& frames) {
+RootStep* RootPaths::allocateSteps(std::size_t count) {
+  constexpr std::size_t kFirstChunk = 256;
+  constexpr std::size_t kLargestChunk = std::size_t{1} << 16;
+  if (step_chunks_.empty() || last_chunk_used_ + count > last_chunk_size_) {
+    last_chunk_size_ = step_chunks_.empty() ? kFirstChunk
+                                            : std::min(2 * last_chunk_size_, kLargestChunk);
+    last_chunk_size_ = std::max<std::size_t>(last_chunk_size_, count);
+    step_chunks_.emplace_back(new RootStep[last_chunk_size_]);
+    last_chunk_used_ = 0;
+  }
+  RootStep* const steps = step_chunks_.back().get() + last_chunk_used_;
+  last_chunk_used_ += count;
+  return steps;
+}
+
+void RootPaths::extend(const FrameTable& frames) {
   settleFrom(frames, static_cast<FrameId>(std::max<std::size_t>(entries_.size(), 1)));
 }
 
-void RootPaths::settleFrom(const std::vector<FrameRecord>& frames, FrameId first) {
+void RootPaths::settleFrom(const FrameTable& frames, FrameId first) {
   enum class State : std::uint8_t { kUnseen, kClimbing, kDone };
   const std::size_t added = frames.size() > first ? frames.size() - first : 0;
   // Only the frames being settled need a state and a step here.
@@ -70,7 +86,6 @@ void RootPaths::settleFrom(const std::vector<FrameRecord>& frames, FrameId first
       Entry& entry = entries_[child];
       entry = Entry{};
       if (looped) continue;
-      entry.offset = static_cast<std::uint32_t>(steps_.size());
       entry.usable = true;
       if (step.next == kNoFrame) {
         entry.root = child;
@@ -81,11 +96,10 @@ void RootPaths::settleFrom(const std::vector<FrameRecord>& frames, FrameId first
         entry.usable = false;
         continue;
       }
-      steps_.push_back(step);
-      for (std::uint32_t i = 0; i < above.size; ++i) {
-        const RootStep copy = steps_[above.offset + i];
-        steps_.push_back(copy);
-      }
+      RootStep* const steps = allocateSteps(above.size + 1);
+      steps[0] = step;
+      std::copy(above.steps, above.steps + above.size, steps + 1);
+      entry.steps = steps;
       entry.size = above.size + 1;
       entry.root = above.root;
     }

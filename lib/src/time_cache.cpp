@@ -5,13 +5,9 @@
 namespace lcmtf::detail {
 
 void TimeCache::setStatic(FrameId parent, const Transform& transform) {
-  stamps_.clear();
+  samples_.clear();
   parents_.clear();
-  transforms_.clear();
-  anchored_.clear();
-  anchoring_ = false;
   static_value_ = EdgeValue{parent, transform};
-  mask_ = 0;
   head_ = 0;
   count_ = 1;
   is_static_ = true;
@@ -23,6 +19,7 @@ void TimeCache::clearHistory() {
   if (is_static_) return;
   head_ = 0;
   count_ = 0;
+  parents_.clear();
   parent_changed_at_ = std::numeric_limits<std::int64_t>::min();
   refreshEnds();
 }
@@ -44,7 +41,6 @@ void TimeCache::refreshEnds() {
   oldest_parent_ = parentOf(0);
   newest_stamp_ = stampAt(count_ - 1);
   newest_parent_ = parentOf(count_ - 1);
-  newest_rotation_ = transformAt(count_ - 1).rotation;
   samples_per_utime_ =
       newest_stamp_ > oldest_stamp_
           ? static_cast<double>(count_ - 1) / static_cast<double>(newest_stamp_ - oldest_stamp_)
@@ -52,35 +48,31 @@ void TimeCache::refreshEnds() {
   if (hasSingleParent()) single_parent_from_ = oldest_stamp_;
 }
 
+void TimeCache::keepParents() {
+  UnfilledArray<FrameId>(samples_.size()).swap(parents_);
+  for (std::size_t i = 0; i < count_; ++i) parents_[slot(i)] = only_parent_;
+}
+
 void TimeCache::put(std::size_t index, std::int64_t stamp, FrameId parent,
-                    const Transform& transform, const Transform* anchor_T_parent) {
+                    const Transform& transform) {
   const std::size_t at = slot(index);
-  stamps_[at].stamp = stamp;
-  parents_[at] = parent;
-  transforms_.store(at, transform);
-  if (anchoring_) anchored_.store(at, anchoredValue(anchor_T_parent, transform));
+  samples_.store(at, stamp, transform);
+  if (parents_.size() == 0) {
+    only_parent_ = parent;
+  } else {
+    parents_[at] = parent;
+  }
+}
+
+void TimeCache::makeRoomForParent(FrameId parent) {
+  if (parents_.size() == 0 && count_ > 0 && parent != only_parent_) keepParents();
 }
 
 void TimeCache::move(std::size_t from, std::size_t to) {
   const std::size_t source = slot(from);
   const std::size_t destination = slot(to);
-  stamps_[destination] = stamps_[source];
-  parents_[destination] = parents_[source];
-  transforms_.store(destination, transforms_[source]);
-  if (anchoring_) anchored_.store(destination, anchored_[source]);
-}
-
-void TimeCache::refreshArc(std::size_t index) {
-  if (index + 1 >= count_) return;
-  stamps_[slot(index)].arc_to_next =
-      signedArcSquared(transformAt(index).rotation, transformAt(index + 1).rotation);
-}
-
-// Until now every anchor was the identity: each anchored value is the sample itself.
-void TimeCache::startAnchoring() {
-  anchoring_ = true;
-  TransformRing(transforms_.size()).swap(anchored_);
-  for (std::size_t i = 0; i < count_; ++i) anchored_.store(slot(i), transformAt(i));
+  samples_.copy(samples_, source, destination);
+  if (parents_.size() != 0) parents_[destination] = parents_[source];
 }
 
 void TimeCache::noteParentChanges(std::size_t index) {
@@ -92,57 +84,51 @@ void TimeCache::noteParentChanges(std::size_t index) {
   }
 }
 
-// Grows straight to the size the edge's rate so far says a full window needs, so that an edge
-// reaches its working size after one small copy rather than a series of doublings (whose last
-// copies, of every busy edge at once, stall a listener).
+// Grows by half, or to the size the edge's rate so far says a full window needs when that is
+// at most double: a steady edge ends a few samples above its window (which keeps a
+// sample near 64 bytes), and one with a short history stays small.
 void TimeCache::grow(std::int64_t cache_time, std::size_t most_samples) {
-  constexpr std::size_t kLargestJump = std::size_t{1} << 16;
-  std::size_t wanted = std::max<std::size_t>(16, stamps_.size() * 2);
-  std::size_t largest = 16;
-  while (largest < most_samples && largest < (std::size_t{1} << 40)) largest *= 2;
+  constexpr std::size_t kSmallest = 4;
+  const std::size_t size = samples_.size();
+  std::size_t wanted = std::max(kSmallest, size + size / 2);
   if (count_ >= 2 && newest_stamp_ > oldest_stamp_ && cache_time > 0) {
-    const double window_samples = static_cast<double>(count_ - 1) *
-                                      static_cast<double>(cache_time) /
-                                      static_cast<double>(newest_stamp_ - oldest_stamp_) +
-                                  1.0;
-    const double with_margin = std::min(window_samples + 16.0, double(kLargestJump));
-    while (static_cast<double>(wanted) < with_margin) wanted *= 2;
+    const double window = static_cast<double>(count_ - 1) * static_cast<double>(cache_time) /
+                              static_cast<double>(newest_stamp_ - oldest_stamp_) +
+                          1.0;
+    const double with_margin = window + window / 64.0 + 4.0;
+    if (with_margin > static_cast<double>(size) && with_margin <= 2.0 * static_cast<double>(size)) {
+      wanted = static_cast<std::size_t>(with_margin);
+    }
   }
-  wanted = std::min(wanted, largest);
-  UnfilledArray<SampleTime> stamps(wanted);
-  UnfilledArray<FrameId> parents(wanted);
-  TransformRing transforms(wanted);
-  TransformRing anchored(anchoring_ ? wanted : 0);
+  wanted = std::max(std::min(wanted, std::max(most_samples, kSmallest)), count_ + 1);
+  SampleRing samples(wanted);
+  UnfilledArray<FrameId> parents(parents_.size() != 0 ? wanted : 0);
   for (std::size_t i = 0; i < count_; ++i) {
-    stamps[i] = stamps_[slot(i)];
-    parents[i] = parentOf(i);
-    transforms.store(i, transformAt(i));
-    if (anchoring_) anchored.store(i, anchored_[slot(i)]);
+    samples.copy(samples_, slot(i), i);
+    if (parents.size() != 0) parents[i] = parents_[slot(i)];
   }
-  stamps_.swap(stamps);
+  samples_.swap(samples);
   parents_.swap(parents);
-  transforms_.swap(transforms);
-  anchored_.swap(anchored);
-  mask_ = wanted - 1;
   head_ = 0;
 }
 
 InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_time,
-                                const Transform* anchor_T_parent, std::size_t most_samples) {
+                                std::size_t most_samples) {
   most_samples = std::max<std::size_t>(most_samples, 2);
   if (is_static_) {
-    mask_ = 0;
     count_ = 0;
+    head_ = 0;
     is_static_ = false;
   }
   if (isTooOld(sample.stamp, cache_time)) return InsertOutcome::kTooOld;
   if (isFullAndOlder(sample.stamp, most_samples)) return InsertOutcome::kFullAndOlder;
-  if (anchor_T_parent && !anchoring_) startAnchoring();
   if (count_ > 0 && sample.stamp <= newest_stamp_) {
     std::size_t index = indexAtOrBefore(sample.stamp);
     if (index < count_ && stampAt(index) == sample.stamp) {
-      put(index, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
-      refreshArcsAround(index);
+      // Replacing the only sample may change the only parent.
+      if (count_ == 1 && parents_.size() == 0) only_parent_ = sample.parent;
+      makeRoomForParent(sample.parent);
+      put(index, sample.stamp, sample.parent, sample.transform);
       noteParentChanges(index);
       refreshEnds();
       return InsertOutcome::kReplaced;
@@ -153,31 +139,30 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
       dropOldest();
       --index;
     }
-    if (count_ == stamps_.size()) grow(cache_time, most_samples);
+    if (count_ == samples_.size()) grow(cache_time, most_samples);
+    makeRoomForParent(sample.parent);
     // Shift the samples newer than `sample` one place towards the back.
     const std::size_t insert_at = dropped || index < count_ ? index + 1 : 0;
     for (std::size_t i = count_; i > insert_at; --i) move(i - 1, i);
-    put(insert_at, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
+    put(insert_at, sample.stamp, sample.parent, sample.transform);
     ++count_;
-    refreshArcsAround(insert_at);
     noteParentChanges(insert_at);
     refreshEnds();
     return dropped ? InsertOutcome::kAddedDroppingOldest : InsertOutcome::kAdded;
   }
   const bool dropped = count_ >= most_samples;
   if (dropped) dropOldest();
-  if (count_ == stamps_.size()) grow(cache_time, most_samples);
-  // From the newest sample's copy: its slot in the ring may have left the cache by now.
-  if (count_ > 0) {
-    stamps_[slot(count_ - 1)].arc_to_next =
-        signedArcSquared(newest_rotation_, sample.transform.rotation);
-  }
-  put(count_, sample.stamp, sample.parent, sample.transform, anchor_T_parent);
+  if (count_ == samples_.size()) grow(cache_time, most_samples);
+  makeRoomForParent(sample.parent);
+  put(count_, sample.stamp, sample.parent, sample.transform);
   ++count_;
   noteParentChanges(count_ - 1);
   const std::int64_t horizon = saturatingSubtract(sample.stamp, cache_time);
   while (stampAt(0) < horizon) dropOldest();
   refreshEnds();
+  // The next insert reads the stamp of the sample after the oldest, long out of the cache by
+  // then on a busy edge.
+  if (count_ > 1) __builtin_prefetch(samples_.address(slot(1)));
   return dropped ? InsertOutcome::kAddedDroppingOldest : InsertOutcome::kAdded;
 }
 

@@ -7,7 +7,7 @@
 #include "compose.hpp"
 #include "lcmtf/transform.hpp"
 #include "slerp_weights.hpp"
-#include "transform_ring.hpp"
+#include "sample_ring.hpp"
 #include "unfilled_array.hpp"
 
 namespace lcmtf::detail {
@@ -38,7 +38,6 @@ struct SampleSpan {
   const Transform* newer = nullptr;
   double ratio = 0.0;
   FrameId parent = kNoFrame;
-  double arc_squared = 0.0;  // signedArcSquared(older, newer) when `newer`
 };
 
 enum class InsertOutcome {
@@ -58,30 +57,25 @@ inline std::int64_t saturatingSubtract(std::int64_t a, std::int64_t b) {
 }
 
 /// The history of one edge (child frame -> parent) kept in time order in a ring, or a single
-/// static value valid at every time. Stamps, parents and transforms live in parallel rings, so
-/// that searching by time reads 8 bytes a sample, and each transform fills one cache line.
+/// static value valid at every time. Each sample fills one cache line, its stamp beside its
+/// transform; parents are kept a sample apiece only once the edge has had two.
 class TimeCache {
  public:
   bool isStatic() const { return is_static_; }
   bool empty() const { return count_ == 0; }
   std::size_t size() const { return count_; }
+  /// How many samples the edge has room for before it grows.
+  std::size_t capacity() const { return samples_.size(); }
 
   /// Makes the edge static with this value, dropping any history.
   void setStatic(FrameId parent, const Transform& transform);
   /// Adds a sample in time order (the edge becomes dynamic), pruning samples older than
   /// `cache_time` behind the newest; a sample already older than that window is refused. An
   /// edge holds at most `most_samples` (at least 2): beyond that its oldest sample makes room,
-  /// and a sample older than all it holds is refused. `anchor_T_parent` is the transform that
-  /// anchors the sample (see reanchor()), or null for the identity.
+  /// and a sample older than all it holds is refused.
   InsertOutcome insert(const EdgeSample& sample, std::int64_t cache_time,
-                       const Transform* anchor_T_parent = nullptr,
                        std::size_t most_samples = kUnbounded);
   static constexpr std::size_t kUnbounded = static_cast<std::size_t>(-1);
-  /// Recomputes each sample's anchored value, anchorOf(parent) * transform, where
-  /// anchorOf(parent) gives a const Transform* (null for the identity). Lookups use anchored
-  /// values to cross the static edges above the parent in the same step as this edge.
-  template <class AnchorOf>
-  void reanchor(AnchorOf anchorOf);
   /// Whether every sample kept has the same parent.
   bool hasSingleParent() const { return parent_changed_at_ <= oldest_stamp_; }
   /// Whether the edge is dynamic and its samples have more than one parent.
@@ -111,9 +105,8 @@ class TimeCache {
   /// The samples that give the edge's value at `stamp` (any stamp for a static edge).
   SampleStatus find(std::int64_t stamp, SampleSpan& span) const;
   /// find() for a dynamic edge whose samples all have one parent and that has data at
-  /// `stamp`, without checking either; from `hint` (prefetch()'s answer) when it holds, and
-  /// in the anchored values when `anchored`.
-  SampleSpan spanWithin(std::int64_t stamp, std::size_t hint, bool anchored) const;
+  /// `stamp`, without checking either; from `hint` (prefetch()'s answer) when it holds.
+  SampleSpan spanWithin(std::int64_t stamp, std::size_t hint) const;
   /// The stamps of the two samples `stamp` falls between, when it falls strictly between two.
   bool samplesAround(std::int64_t stamp, std::int64_t& older, std::int64_t& newer) const {
     if (is_static_ || count_ < 2 || stamp <= oldest_stamp_ || stamp >= newest_stamp_) return false;
@@ -129,7 +122,7 @@ class TimeCache {
   /// Starts loading the samples spanWithin(stamp) will read, so several edges load at once;
   /// returns where it guessed they are, as a hint for spanWithin(). For a dynamic edge with
   /// data at `stamp`.
-  std::size_t prefetch(std::int64_t stamp, bool anchored) const;
+  std::size_t prefetch(std::int64_t stamp) const;
   /// A hint for spanWithin() at a time near the newest sample (as latest-common-time lookups ask):
   /// the sample before the newest when `stamp` falls after it, else none.
   std::size_t hintNearNewest(std::int64_t stamp) const {
@@ -137,69 +130,61 @@ class TimeCache {
                                                                                 : kNoHint;
   }
   static constexpr std::size_t kNoHint = static_cast<std::size_t>(-1);
+  /// Starts loading the two newest samples, which hintNearNewest() and a lookup near the
+  /// newest time read.
+  void prefetchNewest() const {
+    if (count_ < 2) return;
+    __builtin_prefetch(samples_.address(slot(count_ - 2)));
+    __builtin_prefetch(samples_.address(slot(count_ - 1)));
+  }
 
  private:
-  std::size_t slot(std::size_t index) const { return (head_ + index) & mask_; }
-  std::int64_t stampAt(std::size_t index) const { return stamps_[slot(index)].stamp; }
-  FrameId parentOf(std::size_t index) const { return parents_[slot(index)]; }
-  const Transform& transformAt(std::size_t index) const { return transforms_[slot(index)]; }
-  const TransformRing& ring(bool anchored) const {
-    return anchored && anchoring_ ? anchored_ : transforms_;
+  std::size_t slot(std::size_t index) const {
+    const std::size_t at = head_ + index;
+    return at >= samples_.size() ? at - samples_.size() : at;
   }
-  void put(std::size_t index, std::int64_t stamp, FrameId parent, const Transform& transform,
-           const Transform* anchor_T_parent);
-  /// A sample's anchored value: anchor_T_parent * parent_T_child, or the sample for no anchor.
-  static Transform anchoredValue(const Transform* anchor_T_parent,
-                                 const Transform& parent_T_child) {
-    return anchor_T_parent ? composed(*anchor_T_parent, parent_T_child) : parent_T_child;
+  std::int64_t stampAt(std::size_t index) const { return samples_.stamp(slot(index)); }
+  FrameId parentOf(std::size_t index) const {
+    return parents_.size() != 0 ? parents_[slot(index)] : only_parent_;
   }
-  void startAnchoring();
+  const Transform& transformAt(std::size_t index) const {
+    return samples_.transform(slot(index));
+  }
+  void put(std::size_t index, std::int64_t stamp, FrameId parent, const Transform& transform);
+  /// Starts keeping a parent per sample: until now every sample had only_parent_.
+  void keepParents();
+  /// Keeps a parent per sample from now on if a sample under `parent` is to join the others.
+  void makeRoomForParent(FrameId parent);
   void move(std::size_t from, std::size_t to);
-  /// Works out the arc from sample `index` to the next one, when there is a next one.
-  void refreshArc(std::size_t index);
-  /// refreshArc() on each side of a sample just stored at `index`.
-  void refreshArcsAround(std::size_t index) {
-    if (index > 0) refreshArc(index - 1);
-    refreshArc(index);
-  }
-  /// The span at `stamp` from sample `index` (at or before it) of `transforms`: that sample
-  /// alone when `exact`, else it and the next one.
-  SampleSpan spanFrom(std::size_t index, std::int64_t stamp, const TransformRing& transforms,
-                      FrameId parent, bool exact) const {
-    if (exact) return SampleSpan{&transforms[slot(index)], nullptr, 0.0, parent};
-    const std::int64_t older_stamp = stampAt(index);
-    return SampleSpan{&transforms[slot(index)], &transforms[slot(index + 1)],
+  /// The span at `stamp` from sample `index` (at or before it): that sample alone when
+  /// `exact`, else it and the next one.
+  SampleSpan spanFrom(std::size_t index, std::int64_t stamp, FrameId parent, bool exact) const {
+    const std::size_t at = slot(index);
+    if (exact) return SampleSpan{&samples_.transform(at), nullptr, 0.0, parent};
+    const std::size_t next = slot(index + 1);
+    const std::int64_t older_stamp = samples_.stamp(at);
+    return SampleSpan{&samples_.transform(at), &samples_.transform(next),
                       static_cast<double>(stamp - older_stamp) /
-                          static_cast<double>(stampAt(index + 1) - older_stamp),
-                      parent, stamps_[slot(index)].arc_to_next};
+                          static_cast<double>(samples_.stamp(next) - older_stamp),
+                      parent};
   }
   std::size_t indexAtOrBefore(std::int64_t stamp) const;
   std::size_t searchNear(std::int64_t stamp, std::size_t guess) const;
   std::size_t guessIndex(std::int64_t stamp) const;
   void grow(std::int64_t cache_time, std::size_t most_samples);
   void dropOldest() {
-    head_ = (head_ + 1) & mask_;
+    head_ = head_ + 1 == samples_.size() ? 0 : head_ + 1;
     --count_;
   }
   void noteParentChanges(std::size_t index);
   void refreshEnds();
 
-  // A sample's stamp, with what interpolating to the next sample needs to know of the arc
-  // between their rotations (signedArcSquared()); the same for the anchored values, since a
-  // fixed rotation applied to both samples moves them together on the sphere. Kept beside the
-  // stamp, which the search for a time reads anyway.
-  struct SampleTime {
-    std::int64_t stamp;
-    double arc_to_next;
-  };
-  UnfilledArray<SampleTime> stamps_;
+  SampleRing samples_;
+  // A parent per sample, once the edge has had more than one; until then every sample's parent
+  // is only_parent_.
   UnfilledArray<FrameId> parents_;
-  TransformRing transforms_;
-  // In use only once some sample's anchor is not the identity.
-  TransformRing anchored_;
-  bool anchoring_ = false;
+  FrameId only_parent_ = kNoFrame;
   EdgeValue static_value_;
-  std::size_t mask_ = 0;
   std::size_t head_ = 0;
   std::size_t count_ = 0;
   bool is_static_ = false;
@@ -211,26 +196,9 @@ class TimeCache {
   std::int64_t newest_stamp_ = 0;
   FrameId oldest_parent_ = kNoFrame;
   FrameId newest_parent_ = kNoFrame;
-  Eigen::Quaterniond newest_rotation_ = Eigen::Quaterniond::Identity();
   double samples_per_utime_ = 0.0;  // (count - 1) / (newest - oldest), for guessIndex()
   std::int64_t single_parent_from_ = std::numeric_limits<std::int64_t>::max();
 };
-
-template <class AnchorOf>
-void TimeCache::reanchor(AnchorOf anchorOf) {
-  if (is_static_) return;
-  bool any = false;
-  for (std::size_t i = 0; i < count_ && !any; ++i) any = anchorOf(parentOf(i)) != nullptr;
-  anchoring_ = any;
-  if (!any) {
-    anchored_.clear();
-    return;
-  }
-  if (anchored_.size() != transforms_.size()) TransformRing(transforms_.size()).swap(anchored_);
-  for (std::size_t i = 0; i < count_; ++i) {
-    anchored_.store(slot(i), anchoredValue(anchorOf(parentOf(i)), transformAt(i)));
-  }
-}
 
 // Where `stamp` would be if the samples were evenly spaced, as most publishers space them
 // (never the newest sample, so that the next one exists); for oldest <= stamp <= newest.
@@ -241,13 +209,11 @@ inline std::size_t TimeCache::guessIndex(std::int64_t stamp) const {
   return std::min(guess, last - 1);
 }
 
-inline std::size_t TimeCache::prefetch(std::int64_t stamp, bool anchored) const {
+inline std::size_t TimeCache::prefetch(std::int64_t stamp) const {
   if (count_ < 2) return kNoHint;
   const std::size_t guess = guessIndex(stamp);
-  __builtin_prefetch(&stamps_[slot(guess)]);
-  const TransformRing& transforms = ring(anchored);
-  __builtin_prefetch(transforms.address(slot(guess)));
-  __builtin_prefetch(transforms.address(slot(guess + 1)));
+  __builtin_prefetch(samples_.address(slot(guess)));
+  __builtin_prefetch(samples_.address(slot(guess + 1)));
   return guess;
 }
 
@@ -262,10 +228,10 @@ inline std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp) const {
   return searchNear(stamp, guess);
 }
 
-inline SampleSpan TimeCache::spanWithin(std::int64_t stamp, std::size_t hint, bool anchored) const {
+inline SampleSpan TimeCache::spanWithin(std::int64_t stamp, std::size_t hint) const {
   const bool hint_holds = hint != kNoHint && stampAt(hint) <= stamp && stamp < stampAt(hint + 1);
   const std::size_t index = hint_holds ? hint : indexAtOrBefore(stamp);
-  return spanFrom(index, stamp, ring(anchored), newest_parent_, stampAt(index) == stamp);
+  return spanFrom(index, stamp, newest_parent_, stampAt(index) == stamp);
 }
 
 inline SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span) const {
@@ -281,7 +247,7 @@ inline SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span) const 
   // A parent change between the two samples keeps the older one unchanged, as tf does.
   const bool exact =
       stampAt(index) == stamp || (!hasSingleParent() && parentOf(index + 1) != parent);
-  span = spanFrom(index, stamp, transforms_, parent, exact);
+  span = spanFrom(index, stamp, parent, exact);
   return SampleStatus::kOk;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 
-// A PR2-scale frame tree with smooth motion, generated from a fixed seed so that every library
-// under test sees exactly the same frames, samples and queries.
+// A frame tree (or forest) with smooth motion, generated from a fixed seed so that every library
+// under test sees exactly the same frames, samples and queries. tree_shapes.hpp builds the
+// shapes the benchmarks measure.
 
 #include <algorithm>
 #include <cmath>
@@ -30,25 +31,29 @@ struct Query {
   std::size_t source = 0;
   std::int64_t time = 0;
   std::int64_t other_time = 0;
+  std::size_t fixed = 0;  // the fixed frame of a time-travel lookup: the root of the pair's tree
 };
 
 struct Workload {
-  static constexpr std::size_t kFrames = 100;
-  static constexpr std::size_t kSamples = 1000;
   static constexpr std::int64_t kPeriod = 10'000;  // 100 Hz in microseconds
   static constexpr std::int64_t kEpoch = 1'700'000'000'000'000;
   static constexpr std::size_t kQueries = 4096;
 
+  std::string shape;        // a short name, as benchmark names give it
+  std::size_t samples = 0;  // the history of each dynamic edge
   std::vector<std::string> names;
-  std::vector<std::size_t> parent;  // parent[0] is the root's own index
+  std::vector<std::size_t> parent;  // a root's parent is the root itself
   std::vector<std::size_t> depth;
-  std::vector<Edge> edges;  // edges[i] has child frame i + 1
-  std::size_t deepest = 0;
+  std::vector<std::size_t> root;
+  std::vector<Edge> edges;  // one per frame that is not a root, in the order frames were made
+  std::vector<std::size_t> edge_of_frame;  // the index in `edges` of each non-root frame's edge
+  std::size_t deepest = 0;  // the deepest frame of frame 0's tree
   std::int64_t oldest_common = 0;  // every dynamic edge has data in [oldest, newest]
   std::int64_t newest_common = 0;
-  std::vector<Query> random_pairs;
-  std::vector<Query> deepest_chain;
+  std::vector<Query> random_pairs;   // two frames of one tree, at random times
+  std::vector<Query> deepest_chain;  // frame 0 and `deepest`, either way round
 
+  std::size_t frameCount() const { return names.size(); }
   std::int64_t stamp(const Edge& edge, std::size_t k) const {
     return edge.first_stamp + static_cast<std::int64_t>(k) * kPeriod;
   }
@@ -61,18 +66,19 @@ struct Workload {
     for (const Edge& e : edges) n += e.samples.size();
     return n;
   }
-  // Edges between two frames and how many of them are dynamic.
+  // Edges between two frames of one tree and how many of them are dynamic.
   std::pair<std::size_t, std::size_t> pathLength(std::size_t a, std::size_t b) const {
     std::size_t total = 0;
     std::size_t dynamic = 0;
     while (a != b) {
       std::size_t& deeper = depth[a] >= depth[b] ? a : b;
       ++total;
-      dynamic += edges[deeper - 1].dynamic ? 1 : 0;
+      dynamic += edges[edgeInto(deeper)].dynamic ? 1 : 0;
       deeper = parent[deeper];
     }
     return {total, dynamic};
   }
+  std::size_t edgeInto(std::size_t frame) const { return edge_of_frame[frame]; }
 };
 
 namespace detail {
@@ -101,54 +107,38 @@ inline Pose perturb(const Pose& a, const Pose& b) {
   return r;
 }
 
-// A trunk, one limb reaching depth 27, more limbs off the trunk and upper limbs, and short
-// sensor and finger branches, until there are kFrames frames.
-inline void buildTree(Workload& w, std::mt19937_64& rng) {
-  static const char* const kLimbs[] = {"torso", "head", "l_arm", "r_arm", "laser", "camera"};
-  static const char* const kParts[] = {"shoulder_pan", "upper_arm_roll", "elbow_flex",
-                                       "forearm_roll", "wrist_flex",     "gripper_palm",
-                                       "finger_tip",   "optical",        "mount"};
-  auto add = [&](std::size_t parent, const std::string& limb) {
-    const std::size_t id = w.names.size();
-    w.names.push_back(limb + "_" + kParts[id % 9] + "_" + std::to_string(id) + "_link");
-    w.parent.push_back(parent);
-    w.depth.push_back(w.depth[parent] + 1);
-    return id;
-  };
-  w.names = {"map", "odom_combined", "base_footprint", "base_link", "torso_lift_link"};
-  w.parent = {0, 0, 1, 2, 3};
-  w.depth = {0, 1, 2, 3, 4};
-  std::size_t frame = 4;
-  while (w.depth[frame] < 27) frame = add(frame, "r_arm");
-  w.deepest = frame;
-  std::size_t limb = 0;
-  while (w.names.size() < Workload::kFrames) {
-    const bool branch = limb++ % 3 != 0;
-    std::size_t at = std::uniform_int_distribution<std::size_t>(2, 4)(rng);
-    if (branch) {
-      do {
-        at = std::uniform_int_distribution<std::size_t>(5, w.names.size() - 1)(rng);
-      } while (w.depth[at] > 20);
-    }
-    const std::size_t length = branch ? std::uniform_int_distribution<std::size_t>(1, 4)(rng)
-                                      : std::uniform_int_distribution<std::size_t>(12, 18)(rng);
-    for (std::size_t i = 0; i < length && w.names.size() < Workload::kFrames; ++i) {
-      at = add(at, kLimbs[limb % 6]);
-    }
-  }
+// Adds a frame; `parent` is the frame's own index for a root.
+inline std::size_t addFrame(Workload& w, std::size_t parent, std::string name) {
+  const std::size_t id = w.names.size();
+  const bool is_root = parent == id;
+  w.names.push_back(std::move(name));
+  w.parent.push_back(parent);
+  w.depth.push_back(is_root ? 0 : w.depth[parent] + 1);
+  w.root.push_back(is_root ? id : w.root[parent]);
+  return id;
 }
 
-inline void buildMotion(Workload& w, std::mt19937_64& rng) {
+// An edge into every frame that is not a root, `dynamic_fraction` of them (shuffled) moving at
+// 100 Hz with `w.samples` samples each, the rest static.
+inline void buildMotion(Workload& w, std::mt19937_64& rng, double dynamic_fraction) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::vector<bool> dynamic(Workload::kFrames - 1, false);
-  std::fill(dynamic.begin(), dynamic.begin() + (Workload::kFrames - 1) / 3, true);
+  std::vector<std::size_t> children;
+  for (std::size_t frame = 0; frame < w.frameCount(); ++frame) {
+    if (w.parent[frame] != frame) children.push_back(frame);
+  }
+  std::vector<bool> dynamic(children.size(), false);
+  const auto moving = static_cast<std::size_t>(
+      std::ceil(dynamic_fraction * static_cast<double>(children.size()) - 1e-9));
+  std::fill(dynamic.begin(), dynamic.begin() + static_cast<std::ptrdiff_t>(moving), true);
   std::shuffle(dynamic.begin(), dynamic.end(), rng);
   constexpr double kTwoPi = 6.283185307179586;
-  for (std::size_t child = 1; child < Workload::kFrames; ++child) {
+  w.edge_of_frame.assign(w.frameCount(), 0);
+  for (std::size_t i = 0; i < children.size(); ++i) {
     Edge edge;
-    edge.parent = w.parent[child];
-    edge.child = child;
-    edge.dynamic = dynamic[child - 1];
+    edge.child = children[i];
+    edge.parent = w.parent[edge.child];
+    edge.dynamic = dynamic[i];
+    w.edge_of_frame[edge.child] = w.edges.size();
     const Pose base = poseOf(0.3 * unit(rng), 0.3 * unit(rng), 0.3 * unit(rng), unit(rng),
                              unit(rng), unit(rng) + 2.5, 3.0 * unit(rng));
     if (!edge.dynamic) {
@@ -163,7 +153,8 @@ inline void buildMotion(Workload& w, std::mt19937_64& rng) {
     const double ax = unit(rng), ay = unit(rng), az = unit(rng) + 2.5;
     edge.first_stamp = Workload::kEpoch +
                        std::uniform_int_distribution<std::int64_t>(0, Workload::kPeriod - 1)(rng);
-    for (std::size_t k = 0; k < Workload::kSamples; ++k) {
+    edge.samples.reserve(w.samples);
+    for (std::size_t k = 0; k < w.samples; ++k) {
       const double t = static_cast<double>(k * Workload::kPeriod) * 1e-6;
       const double wave = std::sin(kTwoPi * frequency * t + phase);
       const Pose motion =
@@ -174,26 +165,43 @@ inline void buildMotion(Workload& w, std::mt19937_64& rng) {
   }
 }
 
+// Random pairs of frames of one tree at random times where every edge has data, and the same
+// times between frame 0 and the deepest frame of its tree.
 inline void buildQueries(Workload& w, std::mt19937_64& rng) {
-  w.oldest_common = 0;
-  w.newest_common = INT64_MAX;
+  w.oldest_common = Workload::kEpoch;
+  w.newest_common = Workload::kEpoch + Workload::kPeriod;
+  bool first = true;
   for (const Edge& e : w.edges) {
     if (!e.dynamic) continue;
-    w.oldest_common = std::max(w.oldest_common, w.stamp(e, 0));
-    w.newest_common = std::min(w.newest_common, w.stamp(e, Workload::kSamples - 1));
+    w.oldest_common = first ? w.stamp(e, 0) : std::max(w.oldest_common, w.stamp(e, 0));
+    w.newest_common = first ? w.stamp(e, w.samples - 1)
+                            : std::min(w.newest_common, w.stamp(e, w.samples - 1));
+    first = false;
+  }
+  w.deepest = 0;
+  for (std::size_t frame = 0; frame < w.frameCount(); ++frame) {
+    if (w.root[frame] == 0 && w.depth[frame] > w.depth[w.deepest]) w.deepest = frame;
+  }
+  std::vector<std::vector<std::size_t>> members(w.frameCount());
+  for (std::size_t frame = 0; frame < w.frameCount(); ++frame) {
+    members[w.root[frame]].push_back(frame);
   }
   std::uniform_int_distribution<std::int64_t> time(w.oldest_common, w.newest_common);
-  std::uniform_int_distribution<std::size_t> frame(0, Workload::kFrames - 1);
-  for (std::size_t i = 0; i < Workload::kQueries; ++i) {
+  std::uniform_int_distribution<std::size_t> frame(0, w.frameCount() - 1);
+  while (w.random_pairs.size() < Workload::kQueries) {
     Query q;
     q.target = frame(rng);
+    const std::vector<std::size_t>& tree = members[w.root[q.target]];
+    if (tree.size() < 2) continue;
+    std::uniform_int_distribution<std::size_t> member(0, tree.size() - 1);
     do {
-      q.source = frame(rng);
+      q.source = tree[member(rng)];
     } while (q.source == q.target);
     q.time = time(rng);
     q.other_time = time(rng);
+    q.fixed = w.root[q.target];
     w.random_pairs.push_back(q);
-    const bool up = i % 2 == 0;
+    const bool up = w.deepest_chain.size() % 2 == 0;
     w.deepest_chain.push_back(Query{up ? 0 : w.deepest, up ? w.deepest : 0, q.time, q.other_time});
   }
 }
@@ -208,26 +216,23 @@ inline std::vector<std::size_t> dynamicEdges(const Workload& w) {
   return indices;
 }
 
-// Gives `subject` (anything with set(edge, utime, pose, is_static)) every static edge, then
-// every dynamic edge's samples in time order, a round of all edges at a time.
+// Gives `subject` (anything with set(edge, utime, pose, is_static)) the first sample of each
+// edge in the order the frames were made, then the rest of the history of every dynamic edge,
+// one sample of each in turn.
 template <class Subject>
 void fill(Subject& subject, const Workload& w) {
   for (std::size_t i = 0; i < w.edges.size(); ++i) {
-    if (!w.edges[i].dynamic) subject.set(i, w.oldest_common, w.edges[i].samples[0], true);
+    const Edge& edge = w.edges[i];
+    if (edge.dynamic) {
+      subject.set(i, w.stamp(edge, 0), edge.samples[0]);
+    } else {
+      subject.set(i, w.oldest_common, edge.samples[0], true);
+    }
   }
   const std::vector<std::size_t> dynamic = dynamicEdges(w);
-  for (std::size_t k = 0; k < Workload::kSamples; ++k) {
+  for (std::size_t k = 1; k < w.samples; ++k) {
     for (std::size_t i : dynamic) subject.set(i, w.stamp(w.edges[i], k), w.edges[i].samples[k]);
   }
-}
-
-inline Workload makePr2Workload(std::uint64_t seed = 20240601) {
-  Workload w;
-  std::mt19937_64 rng(seed);
-  detail::buildTree(w, rng);
-  detail::buildMotion(w, rng);
-  detail::buildQueries(w, rng);
-  return w;
 }
 
 }  // namespace bench

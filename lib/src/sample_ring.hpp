@@ -1,0 +1,66 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <new>
+#include <type_traits>
+
+#include "lcmtf/transform.hpp"
+#include "unfilled_array.hpp"
+
+namespace lcmtf::detail {
+
+/// Storage for a ring of stamped transforms, one cache line a sample: searching by time reads
+/// the lines the interpolation then uses, and a sample costs 64 bytes. Where Eigen aligns the
+/// rotation to 16 bytes, the stamp fills the 8 bytes that leaves after the translation; else it
+/// follows the transform. Slots are left unwritten until stored, so that a ring sized for a
+/// long history costs no page faults (under the writer's lock) until the history fills it.
+class SampleRing {
+ public:
+  SampleRing() = default;
+  explicit SampleRing(std::size_t size) : slots_(size) {}
+
+  std::size_t size() const { return slots_.size(); }
+  /// The transform last stored in slot `index`; only stored slots may be read.
+  const Transform& transform(std::size_t index) const {
+    return *std::launder(reinterpret_cast<const Transform*>(slots_[index].bytes));
+  }
+  std::int64_t stamp(std::size_t index) const {
+    std::int64_t stamp;
+    std::memcpy(&stamp, slots_[index].bytes + kStampOffset, sizeof stamp);
+    return stamp;
+  }
+  /// The transform first: constructing it may write its padding, where the stamp may go.
+  void store(std::size_t index, std::int64_t stamp, const Transform& value) {
+    ::new (static_cast<void*>(slots_[index].bytes)) Transform(value);
+    std::memcpy(slots_[index].bytes + kStampOffset, &stamp, sizeof stamp);
+  }
+  /// Copies slot `from` of `source` (this ring or another) into slot `to`.
+  void copy(const SampleRing& source, std::size_t from, std::size_t to) {
+    std::memcpy(slots_[to].bytes, source.slots_[from].bytes, sizeof(Slot));
+  }
+  /// Where slot `index` is, to prefetch.
+  const void* address(std::size_t index) const { return slots_[index].bytes; }
+  void swap(SampleRing& other) noexcept { slots_.swap(other.slots_); }
+  void clear() { slots_.clear(); }
+
+ private:
+  static_assert(std::is_trivially_destructible_v<Transform>);
+  // Where the translation ends and the rotation begins, both doubles.
+  static constexpr std::size_t kTranslationEnd = sizeof(Eigen::Vector3d);
+  static constexpr std::size_t kRotationStart = sizeof(Transform) - sizeof(Eigen::Quaterniond);
+  static constexpr bool kStampInPadding =
+      kRotationStart >= kTranslationEnd + sizeof(std::int64_t);
+  static constexpr std::size_t kStampOffset = kStampInPadding ? kTranslationEnd : sizeof(Transform);
+  static constexpr std::size_t kUsedBytes = kStampInPadding ? sizeof(Transform)
+                                                            : sizeof(Transform) + sizeof(std::int64_t);
+  struct alignas(64) Slot {
+    unsigned char bytes[kUsedBytes];
+  };
+  static_assert(!kStampInPadding || sizeof(Slot) == 64);
+
+  UnfilledArray<Slot> slots_;
+};
+
+}  // namespace lcmtf::detail

@@ -1,0 +1,102 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <memory>
+#include <vector>
+
+namespace lcmtf::detail {
+
+/// A sequence indexed like a vector whose elements never move: it grows by chunks, each twice
+/// the size of the one before, so adding an element copies none and pointers into the
+/// elements (as the root paths keep) stay valid while it grows.
+template <class T>
+class StableVector {
+ public:
+  StableVector() = default;
+  StableVector(const StableVector&) = delete;
+  StableVector& operator=(const StableVector&) = delete;
+
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  T& operator[](std::size_t index) { return at(index); }
+  const T& operator[](std::size_t index) const { return at(index); }
+  T& back() { return at(size_ - 1); }
+
+  template <class... Args>
+  T& emplace_back(Args&&... args) {
+    const Place place = placeOf(size_);
+    if (place.chunk == chunks_.size()) {
+      // Storage left uninitialized: each element is constructed as it is added.
+      chunks_.emplace_back(new Storage[kFirstChunk << place.chunk]);
+    }
+    T* element = ::new (static_cast<void*>(&chunks_[place.chunk][place.offset])) T(
+        std::forward<Args>(args)...);
+    ++size_;
+    return *element;
+  }
+
+  ~StableVector() {
+    for (std::size_t i = size_; i-- > 0;) at(i).~T();
+  }
+
+  template <class Table, class Element>
+  class Iterator {
+   public:
+    using iterator_category = std::forward_iterator_tag;
+    using value_type = T;
+    using difference_type = std::ptrdiff_t;
+    using pointer = Element*;
+    using reference = Element&;
+
+    Iterator(Table* table, std::size_t index) : table_(table), index_(index) {}
+    Element& operator*() const { return (*table_)[index_]; }
+    Element* operator->() const { return &(*table_)[index_]; }
+    Iterator& operator++() {
+      ++index_;
+      return *this;
+    }
+    bool operator==(const Iterator& other) const { return index_ == other.index_; }
+    bool operator!=(const Iterator& other) const { return index_ != other.index_; }
+
+   private:
+    Table* table_;
+    std::size_t index_;
+  };
+  using iterator = Iterator<StableVector, T>;
+  using const_iterator = Iterator<const StableVector, const T>;
+  iterator begin() { return {this, 0}; }
+  iterator end() { return {this, size_}; }
+  const_iterator begin() const { return {this, 0}; }
+  const_iterator end() const { return {this, size_}; }
+
+ private:
+  static constexpr std::size_t kFirstChunk = 32;  // a power of two
+  struct alignas(T) Storage {
+    unsigned char bytes[sizeof(T)];
+  };
+  struct Place {
+    std::size_t chunk;
+    std::size_t offset;
+  };
+
+  // Chunk c holds the elements from kFirstChunk * (2^c - 1) on.
+  static Place placeOf(std::size_t index) {
+    const std::size_t shifted = index + kFirstChunk;
+    const auto top = static_cast<std::size_t>(63 - __builtin_clzll(shifted));
+    const std::size_t chunk = top - kFirstChunkBits;
+    return Place{chunk, shifted - (std::size_t{1} << top)};
+  }
+  static constexpr std::size_t kFirstChunkBits = __builtin_ctzll(kFirstChunk);
+
+  T& at(std::size_t index) const {
+    const Place place = placeOf(index);
+    return *std::launder(reinterpret_cast<T*>(chunks_[place.chunk][place.offset].bytes));
+  }
+
+  std::vector<std::unique_ptr<Storage[]>> chunks_;
+  std::size_t size_ = 0;
+};
+
+}  // namespace lcmtf::detail
