@@ -38,32 +38,6 @@ const std::vector<Workload>& workloads() {
 
 const Workload& workload(std::size_t shape) { return workloads()[shape]; }
 
-std::vector<std::size_t> dynamicEdges(const Workload& w) {
-  std::vector<std::size_t> indices;
-  for (std::size_t i = 0; i < w.edges.size(); ++i) {
-    if (w.edges[i].dynamic) indices.push_back(i);
-  }
-  return indices;
-}
-
-// The first sample of each edge in the order the frames were made, then the rest of the history
-// of every dynamic edge, one sample of each in turn.
-template <class Subject>
-void fill(Subject& subject, const Workload& w) {
-  for (std::size_t i = 0; i < w.edges.size(); ++i) {
-    const Edge& edge = w.edges[i];
-    if (edge.dynamic) {
-      subject.set(i, w.stamp(edge, 0), edge.samples[0]);
-    } else {
-      subject.set(i, w.oldest_common, edge.samples[0], true);
-    }
-  }
-  const std::vector<std::size_t> dynamic = dynamicEdges(w);
-  for (std::size_t k = 1; k < w.samples; ++k) {
-    for (std::size_t i : dynamic) subject.set(i, w.stamp(w.edges[i], k), w.edges[i].samples[k]);
-  }
-}
-
 template <class Subject>
 std::unique_ptr<Subject> makeFilled(const Workload& w) {
   auto subject = std::make_unique<Subject>(w);

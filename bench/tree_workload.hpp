@@ -208,4 +208,31 @@ inline void buildQueries(Workload& w, std::mt19937_64& rng) {
 
 }  // namespace detail
 
+inline std::vector<std::size_t> dynamicEdges(const Workload& w) {
+  std::vector<std::size_t> indices;
+  for (std::size_t i = 0; i < w.edges.size(); ++i) {
+    if (w.edges[i].dynamic) indices.push_back(i);
+  }
+  return indices;
+}
+
+// Gives `subject` (anything with set(edge, utime, pose, is_static)) the first sample of each
+// edge in the order the frames were made, then the rest of the history of every dynamic edge,
+// one sample of each in turn.
+template <class Subject>
+void fill(Subject& subject, const Workload& w) {
+  for (std::size_t i = 0; i < w.edges.size(); ++i) {
+    const Edge& edge = w.edges[i];
+    if (edge.dynamic) {
+      subject.set(i, w.stamp(edge, 0), edge.samples[0]);
+    } else {
+      subject.set(i, w.oldest_common, edge.samples[0], true);
+    }
+  }
+  const std::vector<std::size_t> dynamic = dynamicEdges(w);
+  for (std::size_t k = 1; k < w.samples; ++k) {
+    for (std::size_t i : dynamic) subject.set(i, w.stamp(w.edges[i], k), w.edges[i].samples[k]);
+  }
+}
+
 }  // namespace bench

@@ -2,7 +2,8 @@
 # Installs the Debian packages lcmtf builds and tests with, only those that are missing.
 # With --tests it also installs what only the tests use: ROS tf2 (libtf2-dev, with the
 # geometry_msgs and tf2_geometry_msgs headers and KDL's), which the agreement tests check lcmtf
-# against. Nothing lcmtf builds for users links it.
+# against, its Python binding for the Python benchmark's comparison, and pytest. Nothing lcmtf
+# builds for users links them.
 set -euo pipefail
 
 packages=(
@@ -12,9 +13,11 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   default-jdk-headless libjchart2d-java
   clang libclang-rt-14-dev
+  python3 python3-dev pybind11-dev python3-pybind11 python3-numpy
 )
 if [ "${1:-}" = "--tests" ]; then
-  packages+=(libtf2-dev libgeometry-msgs-dev libtf2-geometry-msgs-dev liborocos-kdl-dev)
+  packages+=(libtf2-dev libgeometry-msgs-dev libtf2-geometry-msgs-dev liborocos-kdl-dev
+    python3-pytest python3-tf2)
 fi
 
 missing=()

@@ -99,6 +99,22 @@ TEST_P(DoTransformProperties, CloudsMatchPointByPoint) {
   }
 }
 
+TEST_P(DoTransformProperties, CloudInCallersMemoryMatchesTheReturnedCloud) {
+  std::vector<double> xyz(3 * 20);
+  for (double& coordinate : xyz) coordinate = randomVector(random).x();
+  const Eigen::Map<const Eigen::Matrix3Xd> cloud(xyz.data(), 3, 20);
+  std::vector<double> out(xyz.size());
+  Eigen::Map<Eigen::Matrix3Xd> result(out.data(), 3, 20);
+  transformCloud(b_T_c, cloud, result);
+  EXPECT_EQ(result, transformed(b_T_c, Eigen::Matrix3Xd(cloud)));
+}
+
+TEST(DoTransform, CloudIntoResultOfAnotherSizeThrows) {
+  const Eigen::Matrix3Xd cloud = Eigen::Matrix3Xd::Zero(3, 4);
+  Eigen::Matrix3Xd result(3, 3);
+  EXPECT_THROW(transformCloud(Transform(), cloud, result), std::invalid_argument);
+}
+
 TEST_P(DoTransformProperties, TwistRoundTripsComposesAndMatchesTheRigidBodyFormula) {
   const Twist twist{randomVector(random), randomVector(random)};
   const Twist back = transformed(b_T_c.inverse(), transformed(b_T_c, twist));

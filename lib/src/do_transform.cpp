@@ -1,5 +1,8 @@
 #include "lcmtf/do_transform.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace lcmtf {
 
 // Every form below rotates through the same 3x3 matrix, so each coordinate of a result is a
@@ -27,14 +30,24 @@ Eigen::Isometry3d transformed(const Transform& target_T_source, const Eigen::Iso
 }
 
 Eigen::Matrix3Xd transformed(const Transform& target_T_source, const Eigen::Matrix3Xd& cloud) {
+  Eigen::Matrix3Xd result(3, cloud.cols());
+  transformCloud(target_T_source, cloud, result);
+  return result;
+}
+
+void transformCloud(const Transform& target_T_source,
+                    const Eigen::Ref<const Eigen::Matrix3Xd>& cloud,
+                    Eigen::Ref<Eigen::Matrix3Xd> result) {
+  if (result.cols() != cloud.cols()) {
+    throw std::invalid_argument("transformCloud: " + std::to_string(cloud.cols()) +
+                                " points into room for " + std::to_string(result.cols()));
+  }
   // One pass over the points, rotation as a matrix: memory, not arithmetic, bounds this.
   const Eigen::Matrix3d rotation = target_T_source.rotationMatrix();
   const Eigen::Vector3d translation = target_T_source.translation;
-  Eigen::Matrix3Xd result(3, cloud.cols());
   for (Eigen::Index i = 0; i < cloud.cols(); ++i) {
     result.col(i) = rotation * cloud.col(i) + translation;
   }
-  return result;
 }
 
 std::vector<Eigen::Vector3d> transformed(const Transform& target_T_source,

@@ -24,6 +24,11 @@ Transform transformed(const Transform& target_T_source, const Transform& pose);
 Eigen::Isometry3d transformed(const Transform& target_T_source, const Eigen::Isometry3d& pose);
 /// Every column is a point; one matrix product for the whole cloud.
 Eigen::Matrix3Xd transformed(const Transform& target_T_source, const Eigen::Matrix3Xd& cloud);
+/// The same into `result` (3 x N, not overlapping `cloud`; std::invalid_argument for another
+/// N), for clouds in memory the caller owns (a mapped buffer, a numpy array), with no copy.
+void transformCloud(const Transform& target_T_source,
+                    const Eigen::Ref<const Eigen::Matrix3Xd>& cloud,
+                    Eigen::Ref<Eigen::Matrix3Xd> result);
 std::vector<Eigen::Vector3d> transformed(const Transform& target_T_source,
                                          const std::vector<Eigen::Vector3d>& cloud);
 /// Angular part rotated; linear part rotated plus the lever arm p x (R w), so the result is

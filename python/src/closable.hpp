@@ -1,0 +1,53 @@
+#pragma once
+
+// Objects with threads or sockets of their own, which Python code closes when it is done
+// (close(), or a with block) rather than whenever the garbage collector gets to them.
+
+#include <pybind11/pybind11.h>
+
+#include <memory>
+#include <string>
+
+namespace lcmtf::python {
+
+namespace py = pybind11;
+
+template <class Object>
+class Closable {
+ public:
+  /// `keep_alive` lives as long as `object` (what it refers to, such as a listener's buffer).
+  Closable(std::unique_ptr<Object> object, std::string name,
+           std::shared_ptr<const void> keep_alive = nullptr)
+      : keep_alive_(std::move(keep_alive)), name_(std::move(name)), object_(std::move(object)) {}
+  ~Closable() { close(); }
+  Closable(const Closable&) = delete;
+  Closable& operator=(const Closable&) = delete;
+
+  Object& get() const {
+    if (!object_) throw py::value_error("the " + name_ + " is closed");
+    return *object_;
+  }
+  /// Stops it with the GIL released: its thread may be waiting for the GIL to call back.
+  void close() {
+    py::gil_scoped_release release;
+    object_.reset();
+  }
+
+ private:
+  std::shared_ptr<const void> keep_alive_;
+  std::string name_;
+  std::unique_ptr<Object> object_;
+};
+
+/// close(), and use in a with block, which closes it at the end.
+template <class Object>
+void defineClose(py::class_<Closable<Object>>& python_class) {
+  python_class
+      .def("close", &Closable<Object>::close,
+           "Stops it and frees its LCM; it cannot be used afterwards. Called at the end of a "
+           "with block, and by the garbage collector otherwise.")
+      .def("__enter__", [](py::object self) { return self; })
+      .def("__exit__", [](Closable<Object>& self, const py::args&) { self.close(); });
+}
+
+}  // namespace lcmtf::python

@@ -1,0 +1,119 @@
+"""Bad input raises TypeError or ValueError naming the argument at fault, and changes nothing."""
+
+import math
+
+import numpy as np
+import pytest
+
+import lcmtf
+
+EPOCH = 1_700_000_000.0
+GOOD = lcmtf.TransformStamped("map", "base", EPOCH)
+POINTS = np.zeros((2, 3))
+
+
+def stamped(**changes):
+    arguments = dict(parent_frame="map", child_frame="base", stamp=EPOCH,
+                     translation=(1.0, 2.0, 3.0), rotation=(0.0, 0.0, 0.0, 1.0))
+    arguments.update(changes)
+    return lambda buffer: lcmtf.TransformStamped(**arguments)
+
+
+def on_buffer(method, *arguments, **options):
+    return lambda buffer: getattr(buffer, method)(*arguments, **options)
+
+
+CASES = {
+    "parent frame an int": (stamped(parent_frame=1), TypeError, "parent_frame"),
+    "child frame bytes": (stamped(child_frame=b"base"), TypeError, "child_frame"),
+    "stamp a str": (stamped(stamp="now"), TypeError, "stamp"),
+    "stamp NaN": (stamped(stamp=math.nan), ValueError, "stamp"),
+    "stamp before 1970": (stamped(stamp=-1.0), ValueError, "stamp"),
+    "stamp a bool": (stamped(stamp=True), TypeError, "stamp"),
+    "translation too short": (stamped(translation=[1, 2]), ValueError, "translation"),
+    "translation NaN": (stamped(translation=[1, 2, math.nan]), ValueError, "translation"),
+    "translation a column": (stamped(translation=np.zeros((3, 1))), ValueError, "translation"),
+    "translation of str": (stamped(translation=["1", "2", "3"]), TypeError, "translation[0]"),
+    "translation complex": (stamped(translation=np.array([1j, 0, 0])), TypeError, "translation"),
+    "translation None": (stamped(translation=None), TypeError, "translation"),
+    "rotation zero": (stamped(rotation=[0, 0, 0, 0]), ValueError, "rotation"),
+    "rotation infinite": (stamped(rotation=[0, 0, math.inf, 1]), ValueError, "rotation"),
+    "rotation of three": (stamped(rotation=np.array([0.0, 0.0, 1.0])), ValueError, "rotation"),
+    "target an int": (on_buffer("lookup_transform", 1, "base"), TypeError, "target"),
+    "source None": (on_buffer("can_transform", "map", None), TypeError, "source"),
+    "time a str": (on_buffer("lookup_transform", "map", "base", "0"), TypeError, "time"),
+    "time infinite": (on_buffer("lookup_transform", "map", "base", math.inf), ValueError, "time"),
+    "timeout negative": (on_buffer("lookup_transform", "map", "base", 0.0, -1.0), ValueError,
+                         "timeout"),
+    "fixed an int": (on_buffer("lookup_transform", "map", EPOCH, "base", EPOCH, 3), TypeError,
+                     "fixed"),
+    "timeout of a century": (on_buffer("can_transform", "map", "base", 0.0, 3.2e9), ValueError,
+                             "timeout"),
+    "target time NaN": (on_buffer("can_transform", "map", math.nan, "base", EPOCH, "odom"),
+                        ValueError, "target_time"),
+    "points of two columns": (on_buffer("transform_points", np.zeros((4, 2)), "base", "map"),
+                              ValueError, "points"),
+    "points one point": (on_buffer("transform_points", np.zeros(3), "base", "map"), ValueError,
+                         "points"),
+    "points complex": (on_buffer("transform_points", np.zeros((2, 3), complex), "base", "map"),
+                       TypeError, "points"),
+    "points bool": (on_buffer("transform_points", np.zeros((2, 3), bool), "base", "map"),
+                    TypeError, "points"),
+    "points of str": (on_buffer("transform_points", [["a", "b", "c"]], "base", "map"),
+                      TypeError, "points"),
+    "points None": (on_buffer("transform_points", None, "base", "map"), TypeError, "points"),
+    "points ragged": (on_buffer("transform_points", [[1, 2, 3], [4, 5]], "base", "map"),
+                      TypeError, "points"),
+    "cloud target an int": (on_buffer("transform_points", POINTS, "base", 5), TypeError,
+                            "target_frame"),
+    "transform a dict": (on_buffer("set_transform", {"parent_frame": "map"}, "me"), TypeError,
+                         "transform"),
+    "authority an int": (on_buffer("set_transform", GOOD, 5), TypeError, "authority"),
+    "batch with an int": (on_buffer("set_transforms", [GOOD, 5], "me"), TypeError,
+                          "transforms[1]"),
+    "batch an int": (on_buffer("set_transforms", 5, "me"), TypeError, "transforms"),
+    "frame a float": (on_buffer("get_parent", 5.0), TypeError, "frame"),
+    "interval negative": (on_buffer("lookup_velocity", "base", "map", 0.0, -0.1), ValueError,
+                          "averaging_interval"),
+    "cache time zero": (lambda buffer: lcmtf.Buffer(0.0), ValueError, "cache_time"),
+    "cache time a str": (lambda buffer: lcmtf.Buffer("10"), TypeError, "cache_time"),
+    "listener without buffer": (lambda buffer: lcmtf.TransformListener("memq://"), TypeError,
+                                "buffer"),
+    "listener URL an int": (lambda buffer: lcmtf.TransformListener(buffer, 7667), TypeError,
+                            "lcm_url"),
+    "listener frames negative": (
+        lambda buffer: lcmtf.TransformListener(buffer, "memq://", max_frames=-1), ValueError,
+        "max_frames"),
+    "listener authorities a str": (
+        lambda buffer: lcmtf.TransformListener(buffer, "memq://", allowed_authorities="me"),
+        TypeError, "allowed_authorities"),
+    "listener reporter not callable": (
+        lambda buffer: lcmtf.TransformListener(buffer, "memq://", reporter="stderr"), TypeError,
+        "reporter"),
+    "broadcast a str": (
+        lambda buffer: lcmtf.TransformBroadcaster("memq://").send_transform("map"), TypeError,
+        "transform"),
+    "resend period NaN": (
+        lambda buffer: lcmtf.StaticTransformBroadcaster("memq://", resend_period=math.nan),
+        ValueError, "resend_period"),
+    "utime of a str": (lambda buffer: lcmtf.to_utime("1.5"), TypeError, "time"),
+}
+
+
+@pytest.mark.parametrize("call, error, argument", CASES.values(), ids=CASES.keys())
+def test_bad_input_raises_naming_the_argument(call, error, argument):
+    buffer = lcmtf.Buffer()
+    buffer.set_transform(GOOD, "test")
+    with pytest.raises(error) as raised:
+        call(buffer)
+    assert type(raised.value) is error
+    assert str(raised.value).startswith(argument + " "), str(raised.value)
+    assert sorted(buffer.frames()) == ["base", "map"]
+    assert buffer.statistics().inserted == 1
+
+
+def test_a_closed_listener_says_so():
+    listener = lcmtf.TransformListener(lcmtf.Buffer(), "memq://")
+    listener.close()
+    with pytest.raises(ValueError, match="closed"):
+        listener.statistics()

@@ -1,0 +1,108 @@
+"""lcmtf in Python and C++ programs talk over udpm (ttl=0, a port of each test's own): a Python
+listener hears C++ publishers, and a C++ listener hears Python broadcasters."""
+
+import math
+import re
+import subprocess
+import threading
+import time
+
+import numpy as np
+
+import lcmtf
+from conftest import pose_matrix, quaternion
+
+MOUNTS = """\
+transforms:
+  - {frame_id: base, child_frame_id: camera, x: 0.1, z: 0.5, yaw: 1.5707963267948966}
+  - {frame_id: camera, child_frame_id: camera_optical, qx: -0.5, qy: 0.5, qz: -0.5, qw: 0.5}
+"""
+base_T_optical = pose_matrix([0.1, 0, 0.5], quaternion(math.pi / 2, [0, 0, 1])) @ pose_matrix(
+    [0, 0, 0], [-0.5, 0.5, -0.5, 0.5])
+
+
+def odom_T_base(stamp, origin_utime):
+    """The transport peer's motion: a straight line at constant speed while turning at a
+    constant rate about a fixed axis, which interpolation reproduces exactly."""
+    s = (lcmtf.to_utime(stamp) - origin_utime) * 1e-6
+    translation = np.array([1.0, 2.0, 0.3]) + s * np.array([0.5, -0.25, 0.1])
+    return pose_matrix(translation, quaternion(0.8 * s, [1, 2, 2]))
+
+
+def test_python_listener_hears_cpp_static_publisher_and_broadcaster(
+        udpm_url, program, start, tmp_path):
+    (tmp_path / "mounts.yaml").write_text(MOUNTS)
+    buffer = lcmtf.Buffer()
+    with lcmtf.TransformListener(buffer, udpm_url) as listener:
+        start(program("LCMTF_STATIC_PUBLISHER"), "--lcm-url", udpm_url,
+              "--file", tmp_path / "mounts.yaml")
+        origin = lcmtf.to_utime(time.time())
+        start(program("LCMTF_TRANSPORT_PEER"), "dynamic", udpm_url, 100, 20000, origin, 1.0)
+
+        latest = buffer.lookup_transform("odom", "camera_optical", 0.0, timeout=10.0)
+        np.testing.assert_allclose(
+            latest.matrix(), odom_T_base(latest.stamp, origin) @ base_T_optical, atol=1e-9)
+        between = buffer.lookup_transform("odom", "camera_optical", latest.stamp + 0.0537,
+                                          timeout=10.0)
+        np.testing.assert_allclose(
+            between.matrix(), odom_T_base(between.stamp, origin) @ base_T_optical, atol=1e-9)
+
+        statistics = listener.statistics()
+        assert statistics.messages >= 2 and statistics.malformed == 0
+        senders = [s.authority for s in listener.authority_statistics()]
+        assert any(name.startswith("lcmtf-static-publisher@") for name in senders), senders
+
+
+def test_cpp_listener_hears_python_broadcasters(udpm_url, program):
+    map_T_odom = lcmtf.TransformStamped("map", "odom", 0.0, [10, 0, 0],
+                                        quaternion(math.pi / 2, [0, 0, 1]))
+    odom_T_base = lcmtf.TransformStamped("odom", "base", 0.0, [1, 2, 0],
+                                         quaternion(0.3, [0, 0, 1]))
+    stop = threading.Event()
+    with lcmtf.StaticTransformBroadcaster(udpm_url) as statics, \
+            lcmtf.TransformBroadcaster(udpm_url) as broadcaster:
+        assert statics.send_transform(map_T_odom) and len(statics) == 1
+
+        def broadcast():
+            while not stop.is_set():
+                odom_T_base.stamp = time.time()
+                broadcaster.send_transforms([odom_T_base])
+                stop.wait(0.02)
+
+        sender = threading.Thread(target=broadcast)
+        sender.start()
+        try:
+            echo = subprocess.run(
+                [program("LCMTF_ECHO"), "--lcm-url", udpm_url, "--once", "--timeout", "10",
+                 "--precision", "9", "map", "base"],
+                capture_output=True, text=True, timeout=60)
+        finally:
+            stop.set()
+            sender.join()
+    assert echo.returncode == 0, echo.stderr
+
+    def numbers(label):
+        found = re.search(label + r"\s+\[([^\]]*)\]", echo.stdout)
+        assert found, echo.stdout
+        return [float(value) for value in found.group(1).split(",")]
+
+    expected = map_T_odom.matrix() @ odom_T_base.matrix()
+    np.testing.assert_allclose(numbers(r"translation \(m\)"), expected[:3, 3], atol=1e-8)
+    reported = pose_matrix([0, 0, 0], numbers("quaternion xyzw"))
+    np.testing.assert_allclose(reported[:3, :3], expected[:3, :3], atol=1e-8)
+
+
+def test_listener_reports_a_refusal_to_a_python_callable(udpm_url):
+    reports = []
+    buffer = lcmtf.Buffer()
+    with lcmtf.TransformListener(buffer, udpm_url, allowed_authorities=["trusted"],
+                                 reporter=reports.append) as listener, \
+            lcmtf.TransformBroadcaster(udpm_url, authority="intruder") as broadcaster:
+        for _ in range(200):
+            broadcaster.send_transform(lcmtf.TransformStamped("map", "base", time.time()))
+            if reports:
+                break
+            time.sleep(0.01)
+        assert listener.statistics().unauthorized >= 1
+    assert len(reports) == 1 and "'intruder'" in reports[0], reports
+    assert not buffer.frame_exists("base")
