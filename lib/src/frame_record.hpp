@@ -12,11 +12,11 @@ namespace lcmtf {
 using detail::FrameId;
 using detail::kNoFrame;
 
-/// One frame and the edge to its parent. Each record starts a cache line, its edge's hot part
-/// first.
+/// One frame and the edge to its parent. Each record starts a cache line: the name and the
+/// edge's hot part share its first two.
 struct alignas(64) FrameRecord {
-  detail::TimeCache cache;
   std::string_view name;
+  detail::TimeCache cache;
   std::uint32_t authority = 0;
   std::uint64_t authority_conflicts = 0;
   // The highest frame reached from this one through static edges alone (this frame itself
