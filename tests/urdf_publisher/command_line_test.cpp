@@ -20,6 +20,7 @@ namespace {
 
 using namespace std::chrono_literals;
 using testing::HasSubstr;
+using testing::Not;
 using testing::StartsWith;
 
 TEST(UrdfPublisherCommandLine, DefaultsFollowTheProjectsChannelsAndPublishEveryState) {
@@ -58,9 +59,9 @@ TEST(UrdfPublisherCommandLine, EveryOptionIsRead) {
                                                      "J",
                                                      "--tf-channel",
                                                      "T",
-                                                     "--tf-static-channel",
+                                                     "--static-channel",
                                                      "TS",
-                                                     "--tf-static-request-channel",
+                                                     "--request-channel",
                                                      "TSR",
                                                      "--description-channel",
                                                      "D",
@@ -87,6 +88,19 @@ TEST(UrdfPublisherCommandLine, EveryOptionIsRead) {
   EXPECT_EQ(p.static_resend_period, std::chrono::milliseconds(250));
 }
 
+TEST(UrdfPublisherCommandLine, TheChannelsOldNamesStillWorkUnshown) {
+  const auto parsed = parseUrdfPublisherCommandLine(
+      {"--tf-static-channel", "TS", "--tf-static-request-channel", "TSR", "robot.urdf"});
+  ASSERT_TRUE(parsed.config) << parsed.message;
+  EXPECT_EQ(parsed.config->publisher.tf_static_channel, "TS");
+  EXPECT_EQ(parsed.config->publisher.tf_static_request_channel, "TSR");
+  const auto help = parseUrdfPublisherCommandLine({"--help"});
+  EXPECT_THAT(help.message, Not(HasSubstr("--tf-static-channel")));
+  const auto joint = parseJointPublisherCommandLine({"--channel", "ARM", "robot.urdf"});
+  ASSERT_TRUE(joint.config) << joint.message;
+  EXPECT_EQ(joint.config->channel, "ARM");
+}
+
 TEST(UrdfPublisherCommandLine, HelpExitsZeroAndNamesEveryOption) {
   const auto parsed = parseUrdfPublisherCommandLine({"--help"});
   EXPECT_FALSE(parsed.config);
@@ -100,10 +114,11 @@ TEST(UrdfPublisherCommandLine, HelpExitsZeroAndNamesEveryOption) {
 TEST(UrdfPublisherCommandLine, BadValuesExitTwoNamingTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
       {{"--publish-frequency", "nan", "r.urdf"},
-       "--publish-frequency: 'nan' is not a finite number"},
-      {{"--publish-frequency", "-1", "r.urdf"}, "--publish-frequency: -1 is outside [0, 1e+06]"},
-      {{"--publish-frequency", "fast", "r.urdf"}, "'fast' is not a finite number"},
-      {{"--static-resend-period", "inf", "r.urdf"}, "'inf' is not a finite number"},
+       "--publish-frequency: 'nan' is not a number in [0, 1e+06]"},
+      {{"--publish-frequency", "-1", "r.urdf"},
+       "--publish-frequency: '-1' is not a number in [0, 1e+06]"},
+      {{"--publish-frequency", "fast", "r.urdf"}, "'fast' is not a number in"},
+      {{"--static-resend-period", "inf", "r.urdf"}, "'inf' is not a number in [0, 3600]"},
       {{"--frobnicate", "r.urdf"}, "--frobnicate"},
       {{"a.urdf", "b.urdf"}, "b.urdf"},
       {{"--check"}, "--check needs a URDF file"},
@@ -131,7 +146,8 @@ TEST(JointPublisherCommandLine, DefaultsAreRestAtFiftyHertzUntilStopped) {
 TEST(JointPublisherCommandLine, PositionsAreSplitAtTheLastEqualsSign) {
   const auto parsed = parseJointPublisherCommandLine(
       {"--sweep", "--sweep-period", "3", "--rate", "200", "--duration", "1.5", "--position",
-       "elbow_joint=0.5", "--position", "odd=name=-2e-3", "--channel", "ARM", "r.urdf"});
+       "elbow_joint=0.5", "--position", "odd=name=-2e-3", "--joint-states-channel", "ARM",
+       "r.urdf"});
   ASSERT_TRUE(parsed.config) << parsed.message;
   const JointPublisherConfig& config = *parsed.config;
   EXPECT_TRUE(config.generator.sweep);
@@ -155,13 +171,13 @@ TEST(JointPublisherCommandLine, TheFileMayFollowAHeldPosition) {
 
 TEST(JointPublisherCommandLine, BadValuesExitTwoNamingTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
-      {{"--rate", "0", "r.urdf"}, "--rate: 0 is outside [0.01, 10000]"},
-      {{"--rate", "inf", "r.urdf"}, "'inf' is not a finite number"},
+      {{"--rate", "0", "r.urdf"}, "--rate: '0' is not a number in [0.01, 10000]"},
+      {{"--rate", "inf", "r.urdf"}, "'inf' is not a number in"},
       {{"--position", "elbow", "r.urdf"}, "'elbow' is not JOINT=VALUE"},
       {{"--position", "=1", "r.urdf"}, "'=1' is not JOINT=VALUE"},
       {{"--position", "elbow=nan", "r.urdf"}, "'elbow=nan' is not JOINT=VALUE with a finite VALUE"},
-      {{"--sweep-period", "0", "r.urdf"}, "--sweep-period: 0 is outside"},
-      {{"--duration", "-1", "r.urdf"}, "--duration: -1 is outside"},
+      {{"--sweep-period", "0", "r.urdf"}, "--sweep-period: '0' is not a number in"},
+      {{"--duration", "-1", "r.urdf"}, "--duration: '-1' is not a number in"},
   };
   for (const auto& [arguments, expected] : cases) {
     const auto parsed = parseJointPublisherCommandLine(arguments);
@@ -203,10 +219,10 @@ TEST(UrdfPublisherRun, MissingFileExitsOneNamingIt) {
             "directory\n");
 }
 
-TEST(UrdfPublisherRun, UnusableLcmUrlExitsOneNamingIt) {
+TEST(UrdfPublisherRun, UnusableLcmUrlExitsTwoNamingIt) {
   const ProgramRun run = runUrdfPublisherWith({"--lcm-url", "nonsense://", EXAMPLE_URDF});
-  EXPECT_EQ(run.exit_code, 1);
-  EXPECT_EQ(run.err, "lcmtf-urdf-publisher: cannot open LCM at 'nonsense://'\n");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err, "lcmtf-urdf-publisher: --lcm-url: cannot open LCM at 'nonsense://'\n");
 }
 
 TEST(UrdfPublisherRun, CheckListsTheRobotAndExitsZero) {
@@ -292,13 +308,18 @@ TEST(JointPublisherRun, ARobotWithoutMovableJointsExitsOneSayingSo) {
   std::remove(path.c_str());
 }
 
-TEST(JointPublisherRun, HoldingAnUnknownJointExitsOneNamingIt) {
+TEST(JointPublisherRun, HoldingAnUnknownJointExitsTwoNamingItAndTheJointMeant) {
   const ProgramRun run = runJointPublisherWith(
       {"--lcm-url", "memq://", "--position", "knee=0.1", "--duration", "5", EXAMPLE_URDF});
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(run.err,
             "lcmtf-joint-publisher: --position: robot 'mobile_manipulator' has no movable joint "
             "'knee'\n");
+  const ProgramRun typo = runJointPublisherWith(
+      {"--lcm-url", "memq://", "--position", "elbw_joint=0.1", "--duration", "5", EXAMPLE_URDF});
+  EXPECT_EQ(typo.exit_code, 2);
+  EXPECT_THAT(typo.err, HasSubstr("has no movable joint 'elbw_joint' (did you mean "
+                                  "'elbow_joint'?)"));
 }
 
 TEST(JointPublisherRun, InvalidUrdfExitsOneNamingTheFileAndProblem) {

@@ -6,9 +6,12 @@
 #include <map>
 #include <stdexcept>
 
-#include "format_number.hpp"
+#include "lcmtf/programs/closest_names.hpp"
+#include "lcmtf/programs/number_text.hpp"
 
 namespace lcmtf::urdf {
+
+using programs::formatNumber;
 
 namespace {
 
@@ -22,7 +25,10 @@ std::map<std::string, double> checkedHeld(const RobotModel& robot,
   for (const auto& [name, position] : options.held) {
     const MovableJoint* joint = robot.findMovableJoint(name);
     if (!joint) {
-      throw std::invalid_argument("robot '" + robot.name + "' has no movable joint '" + name + "'");
+      std::vector<std::string> movable;
+      for (const MovableJoint& each : robot.movable_joints) movable.push_back(each.name);
+      throw std::invalid_argument("robot '" + robot.name + "' has no movable joint '" + name + "'" +
+                                  programs::didYouMean(name, movable));
     }
     if (joint->resolved_mimic) {
       throw std::invalid_argument("joint '" + name + "' is a mimic joint: it follows '" +

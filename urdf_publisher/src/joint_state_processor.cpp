@@ -5,8 +5,8 @@
 #include <unordered_map>
 
 #include "joint_state_senders.hpp"
+#include "lcmtf/programs/report_once.hpp"
 #include "lcmtf_urdf/joint_motion.hpp"
-#include "once_reporter.hpp"
 #include "publish_schedule.hpp"
 
 namespace lcmtf::urdf {
@@ -276,7 +276,7 @@ class JointStateProcessor::Impl {
 
   std::string robot_name_;
   std::int64_t period_us_ = 0;
-  OnceReporter reporter_;
+  programs::OnceReporter reporter_;
   JointStateSenders senders_;
   std::vector<Output> outputs_;
   std::vector<Driven> driven_;
