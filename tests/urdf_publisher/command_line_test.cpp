@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <future>
@@ -12,13 +13,18 @@
 #include <thread>
 #include <vector>
 
+#include <lcm/lcm-cpp.hpp>
+
+#include "joint_state_helpers.hpp"
 #include "lcmtf_urdf/joint_publisher_program.hpp"
 #include "lcmtf_urdf/urdf_publisher_program.hpp"
+#include "support/test_lcm.hpp"
 
 namespace lcmtf::urdf {
 namespace {
 
 using namespace std::chrono_literals;
+using lcmtf_test::jointState;
 using testing::HasSubstr;
 using testing::Not;
 using testing::StartsWith;
@@ -292,6 +298,55 @@ TEST(JointPublisherRun, WithoutAFileItWaitsForADescriptionNoLongerThanItsDuratio
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_THAT(run.err, HasSubstr("no valid robot description heard on ROBOT_DESCRIPTION within "
                                  "0.3 s"));
+}
+
+// joint_state_publisher's source_list: what other programs publish wins over the generated.
+TEST(JointPublisherRun, PositionsFromItsSourcesTakeThePlaceOfItsOwn) {
+  const std::string url =
+      lcmtf_test::privateUdpmUrl("JointPublisherRun.PositionsFromItsSourcesTakeThePlaceOfItsOwn");
+  struct Latest {
+    void onState(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {
+      if (state.decode(buffer->data, 0, static_cast<int>(buffer->data_size)) > 0) ++count;
+    }
+    double position(const std::string& joint) const {
+      for (std::size_t i = 0; i < state.name.size(); ++i) {
+        if (state.name[i] == joint) return state.position[i];
+      }
+      return std::nan("");
+    }
+    joint_state_t state;
+    int count = 0;
+  } latest;
+  lcm::LCM lcm(url);
+  lcm.subscribe(kJointStatesChannel, &Latest::onState, &latest);
+  const auto parsed = parseJointPublisherCommandLine({"--lcm-url", url, "--source", "ARM_STATES",
+                                                      "--source", "GRIPPER_STATES", "--rate", "50",
+                                                      "--duration", "1.5", EXAMPLE_URDF});
+  ASSERT_TRUE(parsed.config) << parsed.message;
+  const std::atomic<bool> stop{false};
+  std::ostringstream out, err;
+  auto running = std::async(std::launch::async,
+                            [&] { return runJointPublisher(*parsed.config, stop, out, err); });
+  joint_state_t arm = jointState(1, {"elbow_joint"}, {0.7});
+  joint_state_t gripper = jointState(1, {"gripper_left_finger_joint", "not_a_joint"}, {0.03, 1.0});
+  while (running.wait_for(0ms) != std::future_status::ready) {
+    lcm.publish("ARM_STATES", &arm);
+    lcm.publish("GRIPPER_STATES", &gripper);
+    lcm.handleTimeout(20);
+  }
+  EXPECT_EQ(running.get(), 0) << err.str();
+  ASSERT_GT(latest.count, 10);
+  EXPECT_EQ(latest.position("elbow_joint"), 0.7);
+  EXPECT_EQ(latest.position("gripper_left_finger_joint"), 0.03);
+  EXPECT_EQ(latest.position("gripper_right_finger_joint"), -0.03) << "the mimic follows it";
+  EXPECT_EQ(latest.position("shoulder_pan_joint"), 0.0) << "the rest as generated";
+}
+
+TEST(JointPublisherCommandLine, ASourceCannotBeTheChannelItPublishesOn) {
+  const auto parsed = parseJointPublisherCommandLine({"--source", "JOINT_STATES", "r.urdf"});
+  EXPECT_FALSE(parsed.config);
+  EXPECT_EQ(parsed.exit_code, 2);
+  EXPECT_THAT(parsed.message, HasSubstr("--source JOINT_STATES is the channel it publishes on"));
 }
 
 TEST(JointPublisherRun, ARobotWithoutMovableJointsExitsOneSayingSo) {

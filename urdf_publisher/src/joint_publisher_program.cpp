@@ -10,6 +10,7 @@
 #include "lcmtf/programs/lcm_connection.hpp"
 #include "lcmtf/programs/number_text.hpp"
 #include "lcmtf/programs/stop_signal.hpp"
+#include "lcmtf_urdf/joint_state_sources.hpp"
 #include "program_helpers.hpp"
 
 namespace lcmtf::urdf {
@@ -55,13 +56,18 @@ std::vector<std::pair<std::string, double>> splitHeld(const std::vector<std::str
   return held;
 }
 
-void napUntil(std::chrono::steady_clock::time_point when, const std::atomic<bool>& stop) {
+// Handles what the sources send until `when`; false when LCM fails.
+bool handleUntil(lcm::LCM& lcm, std::chrono::steady_clock::time_point when,
+                 const std::atomic<bool>& stop) {
   while (!stop) {
     const auto now = std::chrono::steady_clock::now();
-    if (now >= when) return;
-    std::this_thread::sleep_for(
-        std::min<std::chrono::steady_clock::duration>(when - now, kLongestNap));
+    if (now >= when) return true;
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(when - now);
+    if (!programs::handleLcmFor(lcm, std::clamp(left, std::chrono::milliseconds(1), kLongestNap))) {
+      return false;
+    }
   }
+  return true;
 }
 
 }  // namespace
@@ -91,11 +97,23 @@ ParsedCommandLine<JointPublisherConfig> parseJointPublisherCommandLine(
   app.add_option("--position", held, "Hold a joint at a position (repeatable), e.g. elbow=0.5")
       ->allow_extra_args(false)
       ->check(heldJointSyntax());
+  app.add_option("--source", config.sources,
+                 "Channel of joint states whose positions are published in place of the "
+                 "generated ones, latest first (repeatable)")
+      ->allow_extra_args(false)
+      ->check(programs::nonEmptyName())
+      ->type_name("CHANNEL");
   app.add_option("--duration", config.duration, "Seconds to run; 0 runs until Ctrl-C")
       ->check(programs::finiteNumberIn(0.0, 1e9))
       ->capture_default_str();
 
   if (!parseWith(app, arguments, parsed)) return parsed;
+  for (const std::string& source : config.sources) {
+    if (source == config.channel) {
+      refuse(app, "--source " + source + " is the channel it publishes on", parsed);
+      return parsed;
+    }
+  }
   config.generator.held = splitHeld(held);
   parsed.config = std::move(config);
   return parsed;
@@ -128,10 +146,14 @@ int runJointPublisher(const JointPublisherConfig& config, const std::atomic<bool
                     "' has no movable joint that follows no other: no joint states to publish");
     return 1;
   }
-  output.say(std::to_string(generator->jointNames().size()) + " joints of robot '" + robot->name +
-             "' " + (config.generator.sweep ? "sweeping" : "at rest") + ", " +
+  const std::size_t mimics = generator->mimicCount();
+  output.say(std::to_string(generator->jointNames().size() - mimics) + " joints of robot '" +
+             robot->name + "' " + (config.generator.sweep ? "sweeping" : "at rest") + ", " +
              programs::formatNumber(config.rate) + " joint states per second on " + config.channel +
-             " via '" + programs::describeLcmUrl(config.lcm_url) + "'");
+             " via '" + programs::describeLcmUrl(config.lcm_url) + "'" +
+             (mimics == 0 ? std::string()
+                          : "; " + std::to_string(mimics) + " mimic joint" +
+                                (mimics == 1 ? " follows" : "s follow") + " them"));
 
   const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(1.0 / config.rate));
@@ -141,16 +163,21 @@ int runJointPublisher(const JointPublisherConfig& config, const std::atomic<bool
   std::uint64_t published = 0;
   std::uint64_t failed = 0;
   BatchNumbering numbering(config.channel, config.authority);
+  const JointStateSources sources(*lcm, config.sources, generator->jointNames());
   while (!stop && (config.duration <= 0.0 || std::chrono::steady_clock::now() < end)) {
     const auto elapsed = std::chrono::steady_clock::now() - start;
-    joint_state_t state = generator->stateAt(std::chrono::duration<double>(elapsed).count(), now());
+    joint_state_t state = generator->stateAt(std::chrono::duration<double>(elapsed).count(), now(),
+                                             sources.positions());
     state.authority = config.authority;
     state.sequence = numbering.next();
     (lcm->publish(config.channel, &state) == 0 ? published : failed) += 1;
     next += period;
     const auto now_steady = std::chrono::steady_clock::now();
     if (next + period < now_steady) next = now_steady;  // fell behind: keep the rate, not the count
-    napUntil(config.duration > 0.0 ? std::min(next, end) : next, stop);
+    if (!handleUntil(*lcm, config.duration > 0.0 ? std::min(next, end) : next, stop)) {
+      output.complain("LCM stopped working at '" + programs::describeLcmUrl(config.lcm_url) + "'");
+      return programs::kExitFailure;
+    }
   }
   output.say("stopped after " + std::to_string(published) + " joint states" +
              (failed != 0 ? ", " + std::to_string(failed) + " failed to publish" : ""));

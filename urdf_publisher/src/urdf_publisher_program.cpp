@@ -100,6 +100,7 @@ int runUrdfPublisher(const UrdfPublisherConfig& config, const std::atomic<bool>&
                            options.joint_states.authority, stop, output);
     if (!robot) return 0;
     options.publish_description = false;  // it is another program's to publish
+    options.follow_description = true;
   }
   // Subscribed before it says so, so that whoever waits for the line may publish at once.
   UrdfPublisher publisher(*lcm, std::move(*robot), options);
@@ -107,10 +108,18 @@ int runUrdfPublisher(const UrdfPublisherConfig& config, const std::atomic<bool>&
              options.joint_states_channel + ", transforms to " + options.tf_channel + " and " +
              options.tf_static_channel + ", via '" + programs::describeLcmUrl(config.lcm_url) +
              "'");
+  std::uint64_t robots_replaced = 0;
   while (!stop) {
-    if (lcm->handleTimeout(100) < 0 && !stop)
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    if (!programs::handleLcmFor(*lcm, std::chrono::milliseconds(100))) {
+      output.complain("LCM stopped working at '" + programs::describeLcmUrl(config.lcm_url) + "'");
+      return programs::kExitFailure;
+    }
     publisher.poll();
+    if (publisher.robotsReplaced() != robots_replaced) {
+      robots_replaced = publisher.robotsReplaced();
+      output.say("a new description replaces the robot: " +
+                 describeRobot(publisher.robot(), prefix));
+    }
   }
   std::string failures;
   if (publisher.publishFailures() != 0) {
