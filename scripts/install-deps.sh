@@ -2,7 +2,8 @@
 # Installs the Debian packages lcmtf builds and tests with, only those that are missing.
 # With --tests it also installs what only the tests use: ROS tf2 (libtf2-dev, with the
 # geometry_msgs and tf2_geometry_msgs headers and KDL's), which the agreement tests check lcmtf
-# against. Nothing lcmtf builds for users links it.
+# against (nothing lcmtf builds for users links it), and Xvfb with a Java that draws windows,
+# under which the lcm-spy tables are drawn.
 set -euo pipefail
 
 packages=(
@@ -14,7 +15,8 @@ packages=(
   clang libclang-rt-14-dev
 )
 if [ "${1:-}" = "--tests" ]; then
-  packages+=(libtf2-dev libgeometry-msgs-dev libtf2-geometry-msgs-dev liborocos-kdl-dev)
+  packages+=(libtf2-dev libgeometry-msgs-dev libtf2-geometry-msgs-dev liborocos-kdl-dev
+    xvfb xauth default-jre)
 fi
 
 missing=()
