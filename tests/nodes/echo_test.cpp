@@ -291,6 +291,11 @@ TEST(Echo, WarnsOnceWhenTheLatestDataStopsChanging) {
   std::thread echo([&] {
     echoCommand({"--lcm-url", url, "--rate", "10", "odom", "base"}, out, err, stop);
   });
+  Buffer heard;
+  ListenerOptions listening;
+  listening.lcm_url = url;
+  const TransformListener listener(heard, listening);
+  EXPECT_TRUE(heard.canTransform("odom", "base", kLatestTime, std::chrono::seconds(10)));
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   base.stop();
   std::this_thread::sleep_for(std::chrono::milliseconds(3000));

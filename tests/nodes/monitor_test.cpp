@@ -180,8 +180,8 @@ TEST(Monitor, AChainToAnUnknownFrameExitsOneSuggestingTheFrameMeant) {
   broadcaster.sendTransform({now(), "base", "gripper_tcp", Transform()});
   std::ostringstream out, err;
   const std::atomic<bool> stop{false};
-  const int status = monitorCommand({"--lcm-url", url, "--duration", "0.3", "base", "gripper_tpc"},
-                                    out, err, stop);
+  const int status =
+      monitorCommand({"--lcm-url", url, "--duration", "1", "base", "gripper_tpc"}, out, err, stop);
   EXPECT_EQ(status, kExitFailure) << out.str();
   EXPECT_THAT(err.str(), HasSubstr("lcmtf-monitor: no chain from 'base' to 'gripper_tpc': "));
   EXPECT_THAT(err.str(), HasSubstr("'gripper_tpc' (did you mean 'gripper_tcp'?)"));
