@@ -37,10 +37,10 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "bench_summary.hpp"
+#include "lcmtf/programs/stop_signal.hpp"
 #include "lcmtf/transform_listener.hpp"
 #include "lcmtf_urdf/joint_state_generator.hpp"
 #include "lcmtf_urdf/joint_state_processor.hpp"
-#include "lcmtf_urdf/stop_signal.hpp"
 #include "pr2_scale_urdf.hpp"
 
 extern char** environ;
@@ -396,7 +396,7 @@ void runEndToEnd(const Options& options, const Workload& g1) {
 }
 
 int runRelay(const std::string& url) {
-  const std::atomic<bool>& stop = lcmtf::urdf::stopOnSignals();
+  const std::atomic<bool>& stop = lcmtf::programs::installStopSignalHandlers();
   lcm::LCM lcm(url);
   if (!lcm.good()) return 1;
   struct Relay {

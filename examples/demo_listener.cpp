@@ -1,32 +1,15 @@
 // The listening end of the demo: prints, a few times a second, where the gripper is in the
 // base frame and where an object the camera saw two seconds ago is now.
 // usage: lcmtf_demo_listener [--lcm-url URL] [--duration S] [--rate HZ] [--help]
-#include <cmath>
-#include <csignal>
 #include <iostream>
-#include <thread>
-
-#include <CLI/CLI.hpp>
 
 #include "demo_report.hpp"
+#include "lcmtf/programs/command_line.hpp"
+#include "lcmtf/programs/stop_signal.hpp"
 #include "lcmtf/transform_listener.hpp"
 
-namespace {
-
-volatile std::sig_atomic_t stop_requested = 0;
-
-// CLI::Range lets NaN through; every number here must be finite.
-const CLI::Validator kFinite(
-    [](std::string& text) -> std::string {
-      double value = 0.0;
-      const bool finite = CLI::detail::lexical_cast(text, value) && std::isfinite(value);
-      return finite ? std::string() : "'" + text + "' is not a finite number";
-    },
-    "FINITE");
-
-extern "C" void requestStop(int /*signal*/) { stop_requested = 1; }
-
-}  // namespace
+using lcmtf::programs::finiteNumber;
+using lcmtf::programs::finiteNumberIn;
 
 int main(int argc, char** argv) {
   std::string lcm_url;
@@ -36,27 +19,30 @@ int main(int argc, char** argv) {
   std::vector<double> object{0.0, 0.0, 1.5};
   lcmtf::demo::DemoFrames frames;
 
-  CLI::App app(
-      "Prints where the gripper is and where an object seen by the camera a while ago "
-      "is now, from the transforms on LCM.",
-      "lcmtf_demo_listener");
-  app.add_option("--lcm-url", lcm_url, "LCM URL (default: LCM's, which stays on this host)");
-  app.add_option("--duration", duration, "Seconds to run; 0 runs until Ctrl-C")
-      ->check(kFinite & CLI::Range(0.0, 1e9));
-  app.add_option("--rate", rate, "Reports per second")->check(kFinite & CLI::Range(0.1, 100.0));
-  app.add_option("--look-back", look_back, "Seconds since the camera saw the object")
-      ->check(kFinite & CLI::Range(0.0, 9.0));
-  app.add_option("--object", object, "Where the camera saw the object, in its frame")
+  const auto app = lcmtf::programs::makeToolApp(
+      "lcmtf_demo_listener",
+      "Prints where the gripper is and where an object seen by the camera a while ago is now, "
+      "from the transforms on LCM.",
+      "Example:\n  lcmtf_demo_listener --duration 10 --look-back 1");
+  app->add_option("--lcm-url", lcm_url, "LCM URL (default: LCM's, which stays on this host)");
+  app->add_option("--duration", duration, "Seconds to run; 0 runs until Ctrl-C")
+      ->check(finiteNumberIn(0.0, 1e9));
+  app->add_option("--rate", rate, "Reports per second")->check(finiteNumberIn(0.1, 100.0));
+  app->add_option("--look-back", look_back, "Seconds since the camera saw the object")
+      ->check(finiteNumberIn(0.0, 9.0));
+  app->add_option("--object", object, "Where the camera saw the object, in its frame")
       ->expected(3)
-      ->check(kFinite);
-  app.add_option("--base", frames.base)->capture_default_str();
-  app.add_option("--end-effector", frames.end_effector)->capture_default_str();
-  app.add_option("--camera", frames.camera)->capture_default_str();
-  app.add_option("--fixed-frame", frames.fixed)->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+      ->check(finiteNumber());
+  app->add_option("--base", frames.base)->capture_default_str();
+  app->add_option("--end-effector", frames.end_effector)->capture_default_str();
+  app->add_option("--camera", frames.camera)->capture_default_str();
+  app->add_option("--fixed-frame", frames.fixed)->capture_default_str();
+  if (const auto status = lcmtf::programs::parseCommandLine(
+          *app, std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr)) {
+    return *status;
+  }
 
-  std::signal(SIGINT, requestStop);
-  std::signal(SIGTERM, requestStop);
+  const std::atomic<bool>& stop_requested = lcmtf::programs::installStopSignalHandlers();
   lcmtf::Buffer buffer;
   lcmtf::ListenerOptions options;
   options.lcm_url = lcm_url;
@@ -70,8 +56,10 @@ int main(int argc, char** argv) {
   for (int tick = 1; !stop_requested; ++tick) {
     const auto due =
         start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(period * tick);
-    while (!stop_requested && std::chrono::steady_clock::now() < due) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    if (lcmtf::programs::sleepUnlessStopped(std::chrono::duration_cast<std::chrono::milliseconds>(
+                                                due - std::chrono::steady_clock::now()),
+                                            stop_requested)) {
+      break;
     }
     const auto now = std::chrono::steady_clock::now();
     if (duration > 0.0 && now - start >= std::chrono::duration<double>(duration)) break;

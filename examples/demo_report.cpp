@@ -1,8 +1,8 @@
 #include "demo_report.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
+
+#include "lcmtf/programs/roll_pitch_yaw.hpp"
 
 namespace lcmtf::demo {
 
@@ -12,13 +12,6 @@ std::string vector(const Eigen::Vector3d& v) {
   char text[64];
   std::snprintf(text, sizeof text, "[%6.3f %6.3f %6.3f]", v.x(), v.y(), v.z());
   return text;
-}
-
-// Fixed-axis roll, pitch, yaw (R = Rz(yaw) Ry(pitch) Rx(roll)), as URDF writes rotations.
-Eigen::Vector3d rollPitchYaw(const Eigen::Quaterniond& rotation) {
-  const Eigen::Matrix3d r = rotation.toRotationMatrix();
-  return {std::atan2(r(2, 1), r(2, 2)), std::asin(std::clamp(-r(2, 0), -1.0, 1.0)),
-          std::atan2(r(1, 0), r(0, 0))};
 }
 
 }  // namespace
@@ -54,7 +47,9 @@ std::optional<DemoReport> makeDemoReport(const BufferCore& buffer, const DemoFra
 }
 
 std::string formatDemoReport(const DemoReport& report, const DemoFrames& frames) {
-  const Eigen::Vector3d rpy = rollPitchYaw(report.base_T_end_effector.rotation);
+  const programs::RollPitchYaw angles =
+      programs::toRollPitchYaw(report.base_T_end_effector.rotation);
+  const Eigen::Vector3d rpy(angles.roll, angles.pitch, angles.yaw);
   char age[32];
   std::snprintf(age, sizeof age, "%.1f s", toSeconds(report.time - report.seen_at));
   return "t=" + toString(report.time) + "  " + frames.end_effector + " in " + frames.base +

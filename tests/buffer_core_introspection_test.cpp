@@ -173,5 +173,12 @@ TEST_F(BufferCoreIntrospection, DotDumpEscapesQuotesInNames) {
   EXPECT_THAT(dot, HasSubstr("  \"base\" -> \"say \\\"hi\\\"\" [label=\"Broadcaster: a \\\"b\\\""));
 }
 
+TEST_F(BufferCoreIntrospection, DotDumpEscapesBackslashesInAuthorities) {
+  // Unescaped, Graphviz would read "\l" as a left-justified line break.
+  put(buffer_, "base", "arm", at(1), pose({0, 0, 0}, 0, kZ), false, "lab\\lab");
+  const std::string dot = buffer_.allFramesAsDot();
+  EXPECT_THAT(dot, HasSubstr("[label=\"Broadcaster: lab\\\\lab\\n"));
+}
+
 }  // namespace
 }  // namespace lcmtf

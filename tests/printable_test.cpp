@@ -31,5 +31,17 @@ TEST(Printable, ReportsKeepTheirLinesButNotOtherControlBytes) {
   EXPECT_EQ(printableLines(""), "");
 }
 
+TEST(DotQuoted, NamesFromTheNetworkAreQuotedSoTheyCannotBreakAGraph) {
+  EXPECT_EQ(dotQuoted("plain"), "\"plain\"");
+  EXPECT_EQ(dotQuoted("a\"b"), "\"a\\\"b\"");
+  EXPECT_EQ(dotQuoted("back\\slash"), "\"back\\\\slash\"");
+  EXPECT_EQ(dotQuoted("line\nbreak"), "\"line\\nbreak\"");
+  EXPECT_EQ(dotQuoted(std::string("bell\x07tab\t")), "\"bell?tab?\"");
+  EXPECT_EQ(dotQuoted("caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\xa4\x96"),
+            "\"caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\xa4\x96\"");
+  EXPECT_EQ(dotQuoted("\xff\xfe\xc3"), "\"???\"");
+  EXPECT_EQ(dotQuoted("\xe2\x82x \xc0\xaf \xed\xa0\x80"), "\"??x ?? ???\"");
+}
+
 }  // namespace
 }  // namespace lcmtf

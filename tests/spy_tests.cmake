@@ -27,4 +27,33 @@ if(LCMTF_BUILD_JAVA AND LCMTF_TYPES_JAR)
             "${PROJECT_SOURCE_DIR}/lcmtypes")
   set_tests_properties(spy_decodes_every_channel_type spy_launcher_command_line
     spy_jar_lists_every_type PROPERTIES TIMEOUT 60)
+
+  # The TF and joint tables lcm-spy shows through the plugins in the types jar: their rows on
+  # messages the C++ types encoded, and, under Xvfb where it is installed, a picture of each.
+  set(table_classes "${spy_build_dir}/table_classes")
+  set(table_tests SpyTablesShowDecodedMessages SpyTablesScreenshot)
+  set(table_outputs "")
+  foreach(test_class IN LISTS table_tests)
+    list(APPEND table_outputs "${table_classes}/${test_class}.class")
+  endforeach()
+  add_custom_command(OUTPUT ${table_outputs}
+    COMMAND "${Java_JAVAC_EXECUTABLE}" -Xlint:all -Werror -encoding UTF-8 --release 8
+            -cp "${LCM_JAR}:${LCMTF_TYPES_JAR}" -d "${table_classes}"
+            "${spy_dir}/SpyTablesShowDecodedMessages.java" "${spy_dir}/SpyTablesScreenshot.java"
+    DEPENDS "${spy_dir}/SpyTablesShowDecodedMessages.java" "${spy_dir}/SpyTablesScreenshot.java"
+            "${LCMTF_TYPES_JAR}" lcmtf_types_jar
+    COMMENT "javac: the lcm-spy table tests"
+    VERBATIM)
+  add_custom_target(spy_table_test_classes ALL DEPENDS ${table_outputs})
+  set(table_classpath "${LCM_JAR}:${LCMTF_TYPES_JAR}:${table_classes}")
+  add_test(NAME spy_tables_show_decoded_messages
+    COMMAND sh -c "mkdir -p \"$2\" && \"$1\" \"$2\" && \"$3\" -Djava.awt.headless=true -cp \"$4\" SpyTablesShowDecodedMessages \"$2\" \"$5\""
+            sh "$<TARGET_FILE:write_sample_messages>" "${spy_build_dir}/table_messages"
+            "${Java_JAVA_EXECUTABLE}" "${table_classpath}" "${LCMTF_TYPES_JAR}")
+  add_test(NAME spy_tables_screenshot
+    COMMAND sh "${spy_dir}/screenshot_tables.sh" "$<TARGET_FILE:write_sample_messages>"
+            "${Java_JAVA_EXECUTABLE}" "${table_classpath}" "${spy_build_dir}/screenshots")
+  set_tests_properties(spy_tables_show_decoded_messages spy_tables_screenshot PROPERTIES
+    TIMEOUT 60)
+  set_tests_properties(spy_tables_screenshot PROPERTIES SKIP_RETURN_CODE 77)
 endif()

@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <iostream>
 #include <shared_mutex>
+#include <stdexcept>
 
 #include "buffer_core_impl.hpp"
 #include "compose.hpp"
 #include "lcmtf/printable.hpp"
+#include "lcmtf/transform_validation.hpp"
 
 namespace lcmtf {
 
@@ -93,13 +94,6 @@ void BufferCore::Impl::reportOnce(InsertRejection kind, const std::string& messa
 
 namespace {
 
-bool isFinite(const Transform& t) {
-  return t.translation.allFinite() && t.rotation.coeffs().allFinite();
-}
-
-// How far from 1 the norm of a unit quaternion computed in double precision may be.
-constexpr double kUnitNormRounding = 1e-12;
-
 std::string edgeName(const TransformStamped& t) {
   return "'" + t.parent_frame + "' -> '" + t.child_frame + "' at " + toString(t.stamp);
 }
@@ -108,36 +102,7 @@ std::string edgeName(const TransformStamped& t) {
 
 InsertRejection BufferCore::Impl::validate(const TransformStamped& transform, Transform& value,
                                            bool& normalized, std::string& reason) const {
-  const std::string_view parent = stripLeadingSlash(transform.parent_frame);
-  const std::string_view child = stripLeadingSlash(transform.child_frame);
-  value = transform.transform;
-  // Most rotations are unit to a few ulps, and then their norm is not needed.
-  const double squared_norm = value.rotation.squaredNorm();
-  const bool plainly_unit = std::abs(squared_norm - 1.0) <= kUnitNormRounding;
-  const double norm = plainly_unit ? 1.0 : std::sqrt(squared_norm);
-  if (parent.empty() || child.empty()) {
-    reason = "empty " + std::string(child.empty() ? "child" : "parent") + " frame name in " +
-             edgeName(transform);
-    return InsertRejection::kEmptyFrameName;
-  }
-  if (parent == child) {
-    reason = "frame '" + std::string(child) + "' cannot be its own parent";
-    return InsertRejection::kSelfParented;
-  }
-  if (!isFinite(value)) {
-    reason = "NaN or infinite value in " + edgeName(transform);
-    return InsertRejection::kNonFinite;
-  }
-  if (norm == 0.0 || std::abs(norm - 1.0) > 1e-3) {
-    reason = "quaternion of norm " + std::to_string(norm) + " in " + edgeName(transform) +
-             " (must be within 1e-3 of 1)";
-    return InsertRejection::kBadQuaternion;
-  }
-  // A unit quaternion computed in double precision is often a few ulps off 1: that is not
-  // denormalized input, so it is stored as given and not counted.
-  normalized = !plainly_unit && std::abs(norm - 1.0) > kUnitNormRounding;
-  if (normalized) value.rotation.coeffs() /= norm;
-  return InsertRejection::kCount;
+  return validateTransform(transform, value, normalized, reason);
 }
 
 InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const Transform& value,

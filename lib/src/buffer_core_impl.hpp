@@ -14,6 +14,7 @@
 #include "frame_name_index.hpp"
 #include "frame_record.hpp"
 #include "lcmtf/buffer_core.hpp"
+#include "lcmtf/frame_name.hpp"
 #include "name_arena.hpp"
 #include "read_mostly_lock.hpp"
 #include "root_paths.hpp"
@@ -48,7 +49,14 @@ struct PathEdge {
 /// canTransform pays for no message it does not print.
 struct LookupFailure {
   enum class Kind {
-    kNone, kInvalidName, kUnknownFrame, kNotConnected, kLoop, kPast, kFuture, kGap
+    kNone,
+    kInvalidName,
+    kUnknownFrame,
+    kNotConnected,
+    kLoop,
+    kPast,
+    kFuture,
+    kGap
   };
   Kind kind = Kind::kNone;
   const std::string* frame = nullptr;  // the bad or unknown name, as the caller gave it
@@ -221,8 +229,7 @@ std::vector<FrameId> findLoop(const FrameTable& frames, FrameId start,
 
 /// One leading '/' is not part of a frame's name.
 inline std::string_view stripLeadingSlash(std::string_view name) {
-  if (!name.empty() && name.front() == '/') name.remove_prefix(1);
-  return name;
+  return canonicalFrameName(name);
 }
 
 }  // namespace lcmtf

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "buffer_core_impl.hpp"
+#include "lcmtf/printable.hpp"
 
 namespace lcmtf {
 
@@ -38,15 +39,6 @@ std::string yamlQuoted(std::string_view text) {
     quoted += c;
   }
   return quoted + "'";
-}
-
-std::string dotQuoted(std::string_view text) {
-  std::string quoted = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') quoted += '\\';
-    quoted += c;
-  }
-  return quoted + "\"";
 }
 
 std::string fixed(double value, int digits) {
@@ -93,22 +85,17 @@ std::string BufferCore::allFramesAsDot() const {
     const EdgeSummary edge = summarize(frame.cache);
     const std::string authority =
         frame.authority ? impl_->authorities_.name(frame.authority) : std::string();
-    std::string label = "Broadcaster: " + authority + "\\n";
+    std::string label = "Broadcaster: " + authority + "\n";
     if (edge.is_static) {
       label += "static";
     } else {
       label += "Average rate: " + fixed(edge.rate_hz, 3) +
-               " Hz\\nMost recent transform: " + toString(fromUtime(edge.newest)) +
-               "\\nBuffer length: " + fixed(toSeconds(Duration(edge.newest - edge.oldest)), 3) +
+               " Hz\nMost recent transform: " + toString(fromUtime(edge.newest)) +
+               "\nBuffer length: " + fixed(toSeconds(Duration(edge.newest - edge.oldest)), 3) +
                " s";
     }
-    std::string escaped_label;
-    for (char c : label) {
-      if (c == '"') escaped_label += '\\';
-      escaped_label += c;
-    }
     dot << "  " << dotQuoted(impl_->nameOf(frame.cache.newestParent())) << " -> "
-        << dotQuoted(frame.name) << " [label=\"" << escaped_label << "\""
+        << dotQuoted(frame.name) << " [label=" << dotQuoted(label)
         << (edge.is_static ? ", style=dashed" : "") << "];\n";
   }
   dot << "}\n";

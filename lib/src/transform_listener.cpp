@@ -5,10 +5,12 @@
 #include <set>
 #include <stdexcept>
 
+#include "lcmtf/frame_name.hpp"
 #include "lcmtf/message_conversions.hpp"
 #include "lcmtf/printable.hpp"
 #include "listener_authorities.hpp"
 #include "open_lcm.hpp"
+#include "time_cache.hpp"
 
 namespace lcmtf {
 
@@ -20,14 +22,6 @@ constexpr int kStaleBatchesBeforeReset = 3;
 
 // Senders whose first reset is reported; later ones are only counted.
 constexpr std::size_t kResetsReported = 10;
-
-// a - b clamped to the int64 range: stamps from the network may be anything.
-std::int64_t saturatingSubtract(std::int64_t a, std::int64_t b) {
-  using Limits = std::numeric_limits<std::int64_t>;
-  if (b > 0 && a < Limits::min() + b) return Limits::min();
-  if (b < 0 && a > Limits::max() + b) return Limits::max();
-  return a - b;
-}
 
 }  // namespace
 
@@ -185,7 +179,7 @@ bool TransformListener::isStale(const tf_message_t& batch, detail::HeardAuthorit
     heard_dynamic_ = true;
   }
   const std::int64_t cache_time = buffer_.cacheTime().count();
-  if (batch_newest >= saturatingSubtract(*sender.newest, cache_time)) {
+  if (batch_newest >= detail::saturatingSubtract(*sender.newest, cache_time)) {
     sender.newest = std::max(*sender.newest, batch_newest);
     sender.stale_in_a_row = 0;
     return false;
@@ -245,7 +239,7 @@ void TransformListener::handleBatch(const tf_message_t& batch, bool is_static) {
   std::size_t frames = buffer_.frameCount();
   std::set<std::string> added;
   auto isNew = [&](const std::string& name) {
-    const std::string bare = !name.empty() && name.front() == '/' ? name.substr(1) : name;
+    const std::string bare(canonicalFrameName(name));
     return !added.count(bare) && !buffer_.frameExists(bare);
   };
   std::vector<TransformStamped> accepted;
@@ -266,7 +260,7 @@ void TransformListener::handleBatch(const tf_message_t& batch, bool is_static) {
     }
     frames += new_frames;
     for (const std::string* name : {&transform.child_frame, &transform.parent_frame}) {
-      added.insert(!name->empty() && name->front() == '/' ? name->substr(1) : *name);
+      added.insert(std::string(canonicalFrameName(*name)));
     }
     accepted.push_back(std::move(transform));
   }

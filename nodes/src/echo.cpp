@@ -29,17 +29,8 @@ constexpr const char* kExamples =
     "  lcmtf-echo --time 1700000000.25 --once --timeout 5 map base_link\n"
     "                                            at that instant (a replayed log), then exit";
 
-std::string knownFrames(const BufferCore& buffer) {
-  std::vector<std::string> names = buffer.getAllFrameNames();
-  std::sort(names.begin(), names.end());
-  constexpr std::size_t kShown = 30;
-  std::string list;
-  for (std::size_t i = 0; i < names.size() && i < kShown; ++i) {
-    list += (i ? ", " : "") + names[i];
-  }
-  if (names.size() > kShown) list += ", ... (" + std::to_string(names.size()) + " in all)";
-  return list;
-}
+// Without new data for this long, a pose of the latest data is said to be stale.
+constexpr auto kStaleAfter = std::chrono::seconds(2);
 
 class EchoLoop {
  public:
@@ -80,6 +71,10 @@ class EchoLoop {
         printed = true;
         next_tick = now_steady + period;
         continue;
+      }
+      if (const std::optional<std::string> never = neverAvailable(time)) {
+        err_ << kProgram << ": " << printable(*never) << std::endl;
+        return kExitFailure;
       }
       const bool timed_out =
           options_.timeout && !printed && now_steady - start >= *options_.timeout;
@@ -131,10 +126,55 @@ class EchoLoop {
       const TransformStamped reference_T_frame =
           buffer_.lookupTransform(options_.reference_frame, options_.frame, time);
       out_ << formatPose(reference_T_frame, now(), options_.precision) << std::flush;
+      if (options_.time.kind == EchoTime::Kind::kLatest) noteFreshness(reference_T_frame.stamp);
       return true;
     } catch (const TransformException&) {
       return false;
     }
+  }
+
+  // A fixed instant older than the history every edge between the frames still keeps: edges
+  // only move forward, so it will never be there. Says why; nothing while it still may come.
+  std::optional<std::string> neverAvailable(TimePoint time) const {
+    if (options_.time.kind != EchoTime::Kind::kFixed) return std::nullopt;
+    TimePoint latest_common;
+    try {
+      latest_common = buffer_.getLatestCommonTime(options_.reference_frame, options_.frame);
+    } catch (const TransformException&) {
+      return std::nullopt;
+    }
+    if (latest_common == kLatestTime) return std::nullopt;
+    // Stamps from the network may be anything.
+    const TimePoint oldest_kept =
+        fromUtime(saturatingSubtract(toUtime(latest_common), buffer_.cacheTime().count()));
+    if (time >= oldest_kept) return std::nullopt;
+    return "'" + options_.frame + "' in '" + options_.reference_frame + "' at " + toString(time) +
+           " can never be looked up: it is older than the " + toString(buffer_.cacheTime()) +
+           " of history kept behind the newest data of every edge between them (the oldest "
+           "instant all of them hold is " +
+           toString(oldest_kept) + ")";
+  }
+
+  // Says once when the latest data stops changing (its publishers stopped), and once when it
+  // changes again.
+  void noteFreshness(TimePoint stamp) {
+    const auto now_steady = std::chrono::steady_clock::now();
+    if (stamp == kLatestTime) return;  // every edge static: there is nothing newer to wait for
+    if (!newest_stamp_ || stamp != *newest_stamp_) {
+      if (stale_) err_ << kProgram << ": new data again, stamped " << toString(stamp) << std::endl;
+      stale_ = false;
+      newest_stamp_ = stamp;
+      newest_changed_ = now_steady;
+      return;
+    }
+    if (stale_ || now_steady - newest_changed_ < kStaleAfter) return;
+    stale_ = true;
+    err_ << kProgram << ": warning: no new data for '" << options_.frame << "' in '"
+         << options_.reference_frame << "' for "
+         << fixedDecimals(std::chrono::duration<double>(now_steady - newest_changed_).count(), 1)
+         << " s: the pose printed is from " << toString(stamp) << " ("
+         << fixedDecimals(toSeconds(now() - stamp), 1)
+         << " s old); are its publishers still running?" << std::endl;
   }
 
   const EchoOptions& options_;
@@ -143,6 +183,9 @@ class EchoLoop {
   std::ostream& err_;
   Buffer buffer_;
   TransformListener listener_;
+  std::optional<TimePoint> newest_stamp_;
+  std::chrono::steady_clock::time_point newest_changed_;
+  bool stale_ = false;
 };
 
 }  // namespace
@@ -202,7 +245,8 @@ std::optional<int> parseEchoCommandLine(const std::vector<std::string>& args, Ec
       ->capture_default_str();
   auto* timeout = app->add_option("--timeout", timeout_seconds,
                                   "Exit with status 1 if no pose could be printed within this "
-                                  "time (default: keep waiting)")
+                                  "time (default: " +
+                                      toString(kOnceTimeout) + " with --once, else keep waiting)")
                       ->check(positiveFiniteNumber())
                       ->type_name("SECONDS");
   addConnectionOptions(*app, options.connection);
@@ -212,22 +256,32 @@ std::optional<int> parseEchoCommandLine(const std::vector<std::string>& args, Ec
   } catch (const CommandLineError& e) {
     return reportBadArguments(*app, e.what(), err);
   }
-  if (timeout->count() > 0) options.timeout = secondsToDuration(timeout_seconds);
+  if (timeout->count() > 0) {
+    options.timeout = secondsToDuration(timeout_seconds);
+  } else if (options.once) {
+    options.timeout = kOnceTimeout;
+  }
   return std::nullopt;
 }
 
 std::string describeMissing(const BufferCore& buffer, const std::string& reference_frame,
                             const std::string& frame, TimePoint time, bool heard_anything) {
   if (!heard_anything) return "no transforms received yet";
-  std::string unknown;
+  const std::vector<std::string> known = buffer.getAllFrameNames();
+  std::vector<std::string> unknown;
   for (const std::string* name : {&reference_frame, &frame}) {
-    if (!buffer.frameExists(*name) && unknown.find("'" + *name + "'") == std::string::npos) {
-      unknown += (unknown.empty() ? "frame '" : " and frame '") + *name + "'";
+    if (!buffer.frameExists(*name) &&
+        std::find(unknown.begin(), unknown.end(), *name) == unknown.end()) {
+      unknown.push_back(*name);
     }
   }
   if (!unknown.empty()) {
-    return unknown + (unknown.find(" and ") == std::string::npos ? " is" : " are") +
-           " unknown; frames heard so far: " + knownFrames(buffer);
+    std::string text;
+    for (const std::string& name : unknown) {
+      text += (text.empty() ? "frame '" : " and frame '") + name + "'" + didYouMean(name, known);
+    }
+    return text + (unknown.size() == 1 ? " is" : " are") +
+           " unknown; frames heard so far: " + listOfNames(unknown.front(), known);
   }
   std::string why;
   if (buffer.canTransform(reference_frame, frame, time, &why)) return "available";

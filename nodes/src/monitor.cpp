@@ -106,10 +106,20 @@ class MonitorLoop {
   }
 
   int exitStatus(std::ostream& err) const {
-    if (heard_anything_) return kExitSuccess;
-    err << kProgram << ": nothing heard on " << source()
-        << "; is a broadcaster running on that URL and those channels?\n";
-    return kExitFailure;
+    if (!heard_anything_) {
+      err << kProgram << ": nothing heard on " << source()
+          << "; is a broadcaster running on that URL and those channels?\n";
+      return kExitFailure;
+    }
+    if (chain_) {
+      const ChainReport chain = chain_->report();
+      if (!chain.problem.empty()) {
+        err << kProgram << ": no chain from '" << chain.frame_a << "' to '" << chain.frame_b
+            << "': " << printable(chain.problem) << '\n';
+        return kExitFailure;
+      }
+    }
+    return kExitSuccess;
   }
 
   // Before the listener asks for the statics: answers may be stamped before the request's

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <vector>
 
-#include "lcmtf/nodes/roll_pitch_yaw.hpp"
+#include "lcmtf/nodes/program_support.hpp"
 
 namespace lcmtf::nodes {
 

@@ -4,9 +4,9 @@
 #include <optional>
 #include <ostream>
 
-#include "lcmtf/nodes/roll_pitch_yaw.hpp"
 #include "lcmtf/nodes/static_transform_file.hpp"
 #include "lcmtf/nodes/static_transform_spec.hpp"
+#include "lcmtf/programs/roll_pitch_yaw.hpp"
 #include "lcmtf/static_transform_broadcaster.hpp"
 
 namespace lcmtf::nodes {
@@ -217,7 +217,7 @@ std::optional<int> parseStaticPublisherCommandLine(const std::vector<std::string
     return reportBadArguments(*app, e.what(), err);
   }
   options.resend_period = secondsToDuration(period_seconds);
-  if (options.authority.empty()) options.authority = toolAuthority(kProgram);
+  if (options.authority.empty()) options.authority = programAuthority(kProgram);
   return std::nullopt;
 }
 
@@ -227,7 +227,7 @@ int runStaticPublisher(const StaticPublisherOptions& options, std::ostream& out,
   // Answering requests before saying it publishes, so that whoever waits for the line may ask.
   std::optional<StaticTransformBroadcaster> broadcaster;
   if (!options.check_only) {
-    lcm = openLcmOrReport(options.connection, kProgram, err);
+    lcm = openLcmOrReport(options.connection.lcm_url, kProgram, err);
     if (!lcm) return kExitBadArguments;
     StaticBroadcasterOptions broadcaster_options;
     broadcaster_options.channel = options.connection.static_channel;

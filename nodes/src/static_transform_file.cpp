@@ -10,7 +10,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "lcmtf/nodes/command_line.hpp"
+#include "lcmtf/programs/command_line.hpp"
 
 namespace lcmtf::nodes {
 

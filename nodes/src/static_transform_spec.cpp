@@ -4,14 +4,15 @@
 #include <cstdio>
 #include <map>
 
-#include "lcmtf/nodes/command_line.hpp"
+#include "lcmtf/frame_name.hpp"
+#include "lcmtf/programs/command_line.hpp"
 
 namespace lcmtf::nodes {
 
 namespace {
 
 std::string frameName(const std::string& name, const std::string& what, const std::string& origin) {
-  const std::string bare = !name.empty() && name.front() == '/' ? name.substr(1) : name;
+  const std::string bare(canonicalFrameName(name));
   if (bare.empty()) throw CommandLineError(origin + ": " + what + " is missing or empty");
   return bare;
 }

@@ -5,13 +5,16 @@
 #include <limits>
 #include <set>
 
+#include "lcmtf/frame_name.hpp"
+#include "lcmtf/message_conversions.hpp"
+#include "lcmtf/programs/saturating.hpp"
+#include "lcmtf/transform_validation.hpp"
+
 namespace lcmtf::nodes {
 
 namespace {
 
-std::string bareName(const std::string& name) {
-  return !name.empty() && name.front() == '/' ? name.substr(1) : name;
-}
+std::string bareName(const std::string& name) { return std::string(canonicalFrameName(name)); }
 
 double secondsBetween(std::int64_t from, std::int64_t to) {
   return static_cast<double>(to - from) * 1e-6;
@@ -30,11 +33,7 @@ double delaySeconds(std::int64_t received, std::int64_t stamp) {
 
 // The oldest stamp a Buffer keeps behind `newest`, without overflowing on hostile stamps.
 TimePoint historyStart(TimePoint newest, Duration cache_time) {
-  const std::int64_t newest_utime = toUtime(newest);
-  if (newest_utime < std::numeric_limits<std::int64_t>::min() + cache_time.count()) {
-    return fromUtime(std::numeric_limits<std::int64_t>::min());
-  }
-  return newest - cache_time;
+  return fromUtime(programs::saturatingSubtract(toUtime(newest), cache_time.count()));
 }
 
 struct DelayStatistics {
@@ -60,26 +59,10 @@ void TfTraffic::noteProblem(const std::string& kind, const std::string& descript
 }
 
 bool TfTraffic::validate(const transform_t& transform, const std::string& authority) {
-  const std::string parent = bareName(transform.parent_frame);
-  const std::string child = bareName(transform.child_frame);
-  const std::string edge = "'" + parent + "' -> '" + child + "' from '" + authority + "'";
   std::string why;
-  const double quaternion_norm = std::sqrt(
-      transform.rotation.x * transform.rotation.x + transform.rotation.y * transform.rotation.y +
-      transform.rotation.z * transform.rotation.z + transform.rotation.w * transform.rotation.w);
-  if (parent.empty() || child.empty()) {
-    why = "empty frame name in " + edge;
-  } else if (parent == child) {
-    why = "frame parented to itself: " + edge;
-  } else if (!std::isfinite(transform.translation.x) || !std::isfinite(transform.translation.y) ||
-             !std::isfinite(transform.translation.z) || !std::isfinite(quaternion_norm)) {
-    why = "non-finite value in " + edge;
-  } else if (std::abs(quaternion_norm - 1.0) > 1e-3) {
-    why = "quaternion of norm " + std::to_string(quaternion_norm) + " in " + edge;
-  }
-  if (why.empty()) return true;
+  if (validateTransform(fromMessage(transform), &why) == InsertRejection::kCount) return true;
   ++invalid_;
-  noteProblem("invalid", "invalid transforms (first: " + why + ")");
+  noteProblem("invalid", "invalid transforms (first, from '" + authority + "': " + why + ")");
   return false;
 }
 

@@ -31,6 +31,18 @@ constexpr const char* kExamples =
     "  lcmtf-view-frames --wait 2 --output /tmp/robot_tree\n"
     "  lcmtf-view-frames --dot-only && dot -Tpng frames.gv -o frames.png";
 
+// "again.gv" names the same files as "again": the extension of one of them is not kept.
+std::string withoutDrawingExtension(const std::string& path) {
+  for (const char* extension : {".gv", ".dot", ".pdf", ".svg"}) {
+    const std::string suffix = extension;
+    const bool ends_so = path.size() > suffix.size() &&
+                         path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0 &&
+                         path[path.size() - suffix.size() - 1] != '/';
+    if (ends_so) return path.substr(0, path.size() - suffix.size());
+  }
+  return path;
+}
+
 std::string plural(std::size_t count, const std::string& word) {
   return std::to_string(count) + " " + word + (count == 1 ? "" : "s");
 }
@@ -48,13 +60,15 @@ std::optional<int> parseViewFramesCommandLine(const std::vector<std::string>& ar
       ->type_name("SECONDS")
       ->capture_default_str();
   app->add_option("-o,--output", options.output,
-                  "Path of the files without extension; .gv, .pdf, .svg are added")
+                  "Path of the files, with or without an extension; .gv, .pdf, .svg are put "
+                  "in place of the extension")
       ->check(nonEmptyName())
       ->type_name("PATH")
       ->capture_default_str();
   app->add_flag("--dot-only", dot_only, "Write only the .gv file, even with Graphviz installed");
   addConnectionOptions(*app, options.connection);
   if (auto status = parseCommandLine(*app, args, out, err)) return status;
+  options.output = withoutDrawingExtension(options.output);
   options.wait = secondsToDuration(wait_seconds);
   options.render = !dot_only;
   return std::nullopt;
@@ -79,7 +93,7 @@ int runViewFrames(const ViewFramesOptions& options, lcm::LCM& lcm, std::ostream&
   const TimePoint start = now();
   TfTraffic traffic;
   TfTrafficSubscriber subscriber(lcm, options.connection, traffic);
-  subscriber.requestStatics(toolAuthority(kProgram));
+  subscriber.requestStatics(programAuthority(kProgram));
   const auto deadline = std::chrono::steady_clock::now() + options.wait;
   while (!stop.load() && std::chrono::steady_clock::now() < deadline) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(

@@ -10,6 +10,7 @@
 
 #include "lcmtf/nodes/pose_text.hpp"
 #include "lcmtf/static_transform_broadcaster.hpp"
+#include "lcmtf/transform_broadcaster.hpp"
 #include "support/parsed_command_line.hpp"
 #include "support/test_lcm.hpp"
 
@@ -65,6 +66,14 @@ TEST(EchoCommandLine, ReadsFramesAndOptions) {
   EXPECT_EQ(parsed.options.connection.lcm_url, "memq://");
   EXPECT_EQ(parsed.options.connection.tf_channel, "MY_TF");
   EXPECT_EQ(parsed.options.connection.static_channel, "TF_STATIC");
+}
+
+TEST(EchoCommandLine, OnceGivesUpAfterFiveSecondsUnlessToldOtherwise) {
+  EXPECT_EQ(parse({"map", "base", "--once"}).options.timeout,
+            std::optional<Duration>(std::chrono::seconds(5)));
+  EXPECT_EQ(parse({"map", "base", "--once", "--timeout", "60"}).options.timeout,
+            std::optional<Duration>(std::chrono::seconds(60)));
+  EXPECT_EQ(parse({"map", "base"}).options.timeout, std::nullopt);
 }
 
 TEST(EchoCommandLine, BadArgumentsAreNamed) {
@@ -152,6 +161,20 @@ TEST(EchoMissing, NamesUnknownFramesAndListsTheKnownOnes) {
             "frame 'map' and frame 'camera' are unknown; frames heard so far: base, odom");
 }
 
+TEST(EchoMissing, SuggestsTheFrameMeantAndListsTheClosestOfManyFirst) {
+  BufferCore buffer;
+  for (int i = 0; i < 40; ++i) {
+    buffer.setTransform({kStamp, "base", "a_link_" + std::to_string(i), Transform()}, "test");
+  }
+  buffer.setTransform({kStamp, "base", "r_gripper_tool_frame", Transform()}, "test");
+  const std::string missing =
+      describeMissing(buffer, "base", "r_gripper_tool_frme", kLatestTime, true);
+  EXPECT_THAT(missing, testing::StartsWith("frame 'r_gripper_tool_frme' (did you mean "
+                                           "'r_gripper_tool_frame'?) is unknown; frames heard so "
+                                           "far: r_gripper_tool_frame, "));
+  EXPECT_THAT(missing, testing::EndsWith("(the 30 closest of 42)"));
+}
+
 TEST(EchoMissing, SaysWhyKnownFramesCannotBeLookedUp) {
   BufferCore buffer;
   buffer.setTransform({kStamp, "odom", "base", Transform()}, "test");
@@ -218,6 +241,71 @@ TEST(Echo, OnceStoppedBeforeAnyPoseExitsOneSayingSo) {
   EXPECT_EQ(status, kExitFailure);
   EXPECT_THAT(err.str(),
               HasSubstr("lcmtf-echo: stopped before 'base' in 'map' could be looked up"));
+}
+
+// Publishes odom -> base on TF every 20 ms, stamped with the time it is sent, until stopped.
+class MovingBase {
+ public:
+  explicit MovingBase(const std::string& url)
+      : thread_([this, url] {
+          TransformBroadcaster broadcaster(url, kTfChannel, "odometry");
+          while (!stop_) {
+            broadcaster.sendTransform({now(), "odom", "base", Transform()});
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+          }
+        }) {}
+  ~MovingBase() { stop(); }
+  void stop() {
+    stop_ = true;
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+TEST(Echo, OnceAtAnInstantOlderThanAnyHistoryFailsAtOnce) {
+  const std::string url =
+      lcmtf_test::privateUdpmUrl("Echo.OnceAtAnInstantOlderThanAnyHistoryFailsAtOnce");
+  MovingBase base(url);
+  std::ostringstream out, err;
+  const std::atomic<bool> stop{false};
+  const auto start = std::chrono::steady_clock::now();
+  const int status = echoCommand({"--lcm-url", url, "--once", "--timeout", "30", "--time",
+                                  toString(now() - std::chrono::seconds(60)), "odom", "base"},
+                                 out, err, stop);
+  EXPECT_EQ(status, kExitFailure);
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
+  EXPECT_THAT(err.str(), HasSubstr("can never be looked up: it is older than the 10.000000 s of "
+                                   "history kept"));
+  EXPECT_EQ(out.str(), "");
+}
+
+TEST(Echo, WarnsOnceWhenTheLatestDataStopsChanging) {
+  const std::string url =
+      lcmtf_test::privateUdpmUrl("Echo.WarnsOnceWhenTheLatestDataStopsChanging");
+  MovingBase base(url);
+  std::ostringstream out, err;
+  std::atomic<bool> stop{false};
+  std::thread echo([&] {
+    echoCommand({"--lcm-url", url, "--rate", "10", "odom", "base"}, out, err, stop);
+  });
+  Buffer heard;
+  ListenerOptions listening;
+  listening.lcm_url = url;
+  const TransformListener listener(heard, listening);
+  EXPECT_TRUE(heard.canTransform("odom", "base", kLatestTime, std::chrono::seconds(10)));
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  base.stop();
+  std::this_thread::sleep_for(std::chrono::milliseconds(3000));
+  stop = true;
+  echo.join();
+  EXPECT_THAT(out.str(), HasSubstr("'base' in 'odom'"));
+  const std::string said = err.str();
+  EXPECT_THAT(said, HasSubstr("lcmtf-echo: warning: no new data for 'base' in 'odom' for "));
+  EXPECT_THAT(said, HasSubstr("are its publishers still running?"));
+  EXPECT_EQ(said.find("warning"), said.rfind("warning")) << "said once: " << said;
 }
 
 }  // namespace

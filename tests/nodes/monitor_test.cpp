@@ -9,7 +9,9 @@
 
 #include "lcmtf/nodes/monitor_report.hpp"
 
+#include "lcmtf/static_transform_broadcaster.hpp"
 #include "support/parsed_command_line.hpp"
+#include "support/test_lcm.hpp"
 #include "support/wire_samples.hpp"
 
 namespace lcmtf::nodes {
@@ -133,7 +135,8 @@ TEST(MonitorCommandLine, ReadsTheChainDurationAndContinuousMode) {
 TEST(MonitorCommandLine, BadArgumentsAreNamed) {
   EXPECT_THAT(parse({"map"}).err, HasSubstr("got 1 frame arguments: give two frames (A B)"));
   EXPECT_THAT(parse({"a", "b", "c"}).err, HasSubstr("got 3 frame arguments"));
-  EXPECT_THAT(parse({"--duration", "0"}).err, HasSubstr("--duration: '0' is not a number in (0, 86400]"));
+  EXPECT_THAT(parse({"--duration", "0"}).err,
+              HasSubstr("--duration: '0' is not a number in (0, 86400]"));
   EXPECT_THAT(parse({"--duration", "-3"}).err, HasSubstr("--duration"));
   EXPECT_THAT(parse({"--static-channel", ""}).err, HasSubstr("--static-channel"));
   EXPECT_EQ(parse({"--continuous=maybe"}).status, std::optional<int>(kExitBadArguments));
@@ -166,6 +169,22 @@ TEST(MonitorReport, BatchesLostReorderedOrDuplicatedAreListedPerAuthority) {
 
 TEST(MonitorReport, NothingLostSaysNothingOfNumbers) {
   EXPECT_THAT(formatMonitorReport(robotSummary(), "TF", nullptr), Not(HasSubstr("Batches lost")));
+}
+
+TEST(Monitor, AChainToAnUnknownFrameExitsOneSuggestingTheFrameMeant) {
+  const std::string url =
+      lcmtf_test::privateUdpmUrl("Monitor.AChainToAnUnknownFrameExitsOneSuggestingTheFrameMeant");
+  StaticBroadcasterOptions broadcaster_options;
+  broadcaster_options.lcm_url = url;
+  StaticTransformBroadcaster broadcaster(broadcaster_options);
+  broadcaster.sendTransform({now(), "base", "gripper_tcp", Transform()});
+  std::ostringstream out, err;
+  const std::atomic<bool> stop{false};
+  const int status =
+      monitorCommand({"--lcm-url", url, "--duration", "1", "base", "gripper_tpc"}, out, err, stop);
+  EXPECT_EQ(status, kExitFailure) << out.str();
+  EXPECT_THAT(err.str(), HasSubstr("lcmtf-monitor: no chain from 'base' to 'gripper_tpc': "));
+  EXPECT_THAT(err.str(), HasSubstr("'gripper_tpc' (did you mean 'gripper_tcp'?)"));
 }
 
 TEST(Monitor, NothingHeardIsReportedAndExitsOne) {

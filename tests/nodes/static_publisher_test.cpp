@@ -10,8 +10,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/child_process.hpp"
 #include "support/parsed_command_line.hpp"
-#include "support/tool_process.hpp"
 
 namespace lcmtf::nodes {
 namespace {

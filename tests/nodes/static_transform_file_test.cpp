@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "lcmtf/nodes/command_line.hpp"
-#include "support/tool_process.hpp"
+#include "lcmtf/programs/command_line.hpp"
+#include "support/child_process.hpp"
 
 namespace lcmtf::nodes {
 namespace {

@@ -162,8 +162,8 @@ TEST(TfTraffic, InvalidTransformsAreCountedAndDescribedButNotRecorded) {
   ASSERT_EQ(summary.edges.size(), 1u);
   EXPECT_EQ(summary.edges[0].child, "good");
   ASSERT_EQ(summary.problems.size(), 1u);
-  EXPECT_THAT(summary.problems[0], HasSubstr("invalid transforms (first: empty frame name in "
-                                             "'' -> 'base' from 'bad')"));
+  EXPECT_THAT(summary.problems[0], HasSubstr("invalid transforms (first, from 'bad': empty parent "
+                                             "frame name in '' -> 'base' at "));
 }
 
 TEST(TfTraffic, MalformedMessagesAreCountedWithTheFirstReason) {

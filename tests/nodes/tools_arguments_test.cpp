@@ -1,17 +1,17 @@
 // Every tool, run as a process, refuses each bad argument with exit status 2 and a message
-// that names it; --help and --version exit 0.
+// that names it (tests/programs/program_conventions_test.cpp checks what all programs share).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "support/tool_process.hpp"
+#include "support/child_process.hpp"
 
 namespace {
 
 using namespace std::chrono_literals;
-using lcmtf_test::ToolProcess;
+using lcmtf_test::ChildProcess;
 using testing::HasSubstr;
 
 struct BadCall {
@@ -29,7 +29,7 @@ class BadArgument : public testing::TestWithParam<BadCall> {};
 
 TEST_P(BadArgument, ExitsTwoWithAMessageNamingIt) {
   const BadCall& call = GetParam();
-  ToolProcess tool(call.program, call.arguments);
+  ChildProcess tool(call.program, call.arguments);
   ASSERT_EQ(tool.waitForExit(10s), std::optional<int>(2)) << tool.stderrText();
   const std::string program = call.program.substr(call.program.rfind('/') + 1);
   EXPECT_THAT(tool.stderrText(), HasSubstr(program + ": "));
@@ -102,28 +102,5 @@ INSTANTIATE_TEST_SUITE_P(
                             {"--lcm-url", "memq://", "--output", "/nonexistent/tree"},
                             "--output: cannot write '/nonexistent/tree.gv'"},
                     BadCall{LCMTF_VIEW_FRAMES_PATH, {"tree"}, "tree"}));
-
-class EveryTool : public testing::TestWithParam<std::string> {};
-
-TEST_P(EveryTool, HelpTeachesAndExitsZero) {
-  ToolProcess tool(GetParam(), {"--help"});
-  ASSERT_EQ(tool.waitForExit(10s), std::optional<int>(0)) << tool.stderrText();
-  for (const char* taught :
-       {"Usage:", "--lcm-url", "--static-channel", "Examples:", "Exit status: 0 on success"}) {
-    EXPECT_THAT(tool.stdoutText(), HasSubstr(taught));
-  }
-}
-
-TEST_P(EveryTool, VersionNamesTheProgramAndExitsZero) {
-  ToolProcess tool(GetParam(), {"--version"});
-  ASSERT_EQ(tool.waitForExit(10s), std::optional<int>(0)) << tool.stderrText();
-  const std::string program = GetParam().substr(GetParam().rfind('/') + 1);
-  EXPECT_THAT(tool.stdoutText(),
-              testing::MatchesRegex(program + " \\(lcmtf\\) [0-9]+\\.[0-9]+\\.[0-9]+\n"));
-}
-
-INSTANTIATE_TEST_SUITE_P(Tools, EveryTool,
-                         testing::Values(LCMTF_STATIC_PUBLISHER_PATH, LCMTF_ECHO_PATH,
-                                         LCMTF_MONITOR_PATH, LCMTF_VIEW_FRAMES_PATH));
 
 }  // namespace

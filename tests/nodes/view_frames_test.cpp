@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "support/child_process.hpp"
 #include "support/parsed_command_line.hpp"
-#include "support/tool_process.hpp"
 
 namespace lcmtf::nodes {
 namespace {
@@ -31,6 +31,14 @@ TEST(ViewFramesCommandLine, ReadsWaitOutputAndDotOnly) {
   EXPECT_EQ(defaults.options.wait, std::chrono::seconds(5));
   EXPECT_EQ(defaults.options.output, "frames");
   EXPECT_TRUE(defaults.options.render);
+}
+
+TEST(ViewFramesCommandLine, OutputMayBeGivenWithTheExtensionOfOneOfItsFiles) {
+  EXPECT_EQ(parse({"--output", "again.gv"}).options.output, "again");
+  EXPECT_EQ(parse({"--output", "/tmp/tree.pdf"}).options.output, "/tmp/tree");
+  EXPECT_EQ(parse({"--output", "tree.svg"}).options.output, "tree");
+  EXPECT_EQ(parse({"--output", "robot.v2"}).options.output, "robot.v2");
+  EXPECT_EQ(parse({"--output", "/tmp/.gv"}).options.output, "/tmp/.gv");
 }
 
 TEST(ViewFramesCommandLine, BadArgumentsAreNamed) {

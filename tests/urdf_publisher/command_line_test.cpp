@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <future>
@@ -12,14 +13,20 @@
 #include <thread>
 #include <vector>
 
+#include <lcm/lcm-cpp.hpp>
+
+#include "joint_state_helpers.hpp"
 #include "lcmtf_urdf/joint_publisher_program.hpp"
 #include "lcmtf_urdf/urdf_publisher_program.hpp"
+#include "support/test_lcm.hpp"
 
 namespace lcmtf::urdf {
 namespace {
 
 using namespace std::chrono_literals;
+using lcmtf_test::jointState;
 using testing::HasSubstr;
+using testing::Not;
 using testing::StartsWith;
 
 TEST(UrdfPublisherCommandLine, DefaultsFollowTheProjectsChannelsAndPublishEveryState) {
@@ -58,9 +65,9 @@ TEST(UrdfPublisherCommandLine, EveryOptionIsRead) {
                                                      "J",
                                                      "--tf-channel",
                                                      "T",
-                                                     "--tf-static-channel",
+                                                     "--static-channel",
                                                      "TS",
-                                                     "--tf-static-request-channel",
+                                                     "--request-channel",
                                                      "TSR",
                                                      "--description-channel",
                                                      "D",
@@ -87,6 +94,19 @@ TEST(UrdfPublisherCommandLine, EveryOptionIsRead) {
   EXPECT_EQ(p.static_resend_period, std::chrono::milliseconds(250));
 }
 
+TEST(UrdfPublisherCommandLine, TheChannelsOldNamesStillWorkUnshown) {
+  const auto parsed = parseUrdfPublisherCommandLine(
+      {"--tf-static-channel", "TS", "--tf-static-request-channel", "TSR", "robot.urdf"});
+  ASSERT_TRUE(parsed.config) << parsed.message;
+  EXPECT_EQ(parsed.config->publisher.tf_static_channel, "TS");
+  EXPECT_EQ(parsed.config->publisher.tf_static_request_channel, "TSR");
+  const auto help = parseUrdfPublisherCommandLine({"--help"});
+  EXPECT_THAT(help.message, Not(HasSubstr("--tf-static-channel")));
+  const auto joint = parseJointPublisherCommandLine({"--channel", "ARM", "robot.urdf"});
+  ASSERT_TRUE(joint.config) << joint.message;
+  EXPECT_EQ(joint.config->channel, "ARM");
+}
+
 TEST(UrdfPublisherCommandLine, HelpExitsZeroAndNamesEveryOption) {
   const auto parsed = parseUrdfPublisherCommandLine({"--help"});
   EXPECT_FALSE(parsed.config);
@@ -100,10 +120,11 @@ TEST(UrdfPublisherCommandLine, HelpExitsZeroAndNamesEveryOption) {
 TEST(UrdfPublisherCommandLine, BadValuesExitTwoNamingTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
       {{"--publish-frequency", "nan", "r.urdf"},
-       "--publish-frequency: 'nan' is not a finite number"},
-      {{"--publish-frequency", "-1", "r.urdf"}, "--publish-frequency: -1 is outside [0, 1e+06]"},
-      {{"--publish-frequency", "fast", "r.urdf"}, "'fast' is not a finite number"},
-      {{"--static-resend-period", "inf", "r.urdf"}, "'inf' is not a finite number"},
+       "--publish-frequency: 'nan' is not a number in [0, 1e+06]"},
+      {{"--publish-frequency", "-1", "r.urdf"},
+       "--publish-frequency: '-1' is not a number in [0, 1e+06]"},
+      {{"--publish-frequency", "fast", "r.urdf"}, "'fast' is not a number in"},
+      {{"--static-resend-period", "inf", "r.urdf"}, "'inf' is not a number in [0, 3600]"},
       {{"--frobnicate", "r.urdf"}, "--frobnicate"},
       {{"a.urdf", "b.urdf"}, "b.urdf"},
       {{"--check"}, "--check needs a URDF file"},
@@ -131,7 +152,8 @@ TEST(JointPublisherCommandLine, DefaultsAreRestAtFiftyHertzUntilStopped) {
 TEST(JointPublisherCommandLine, PositionsAreSplitAtTheLastEqualsSign) {
   const auto parsed = parseJointPublisherCommandLine(
       {"--sweep", "--sweep-period", "3", "--rate", "200", "--duration", "1.5", "--position",
-       "elbow_joint=0.5", "--position", "odd=name=-2e-3", "--channel", "ARM", "r.urdf"});
+       "elbow_joint=0.5", "--position", "odd=name=-2e-3", "--joint-states-channel", "ARM",
+       "r.urdf"});
   ASSERT_TRUE(parsed.config) << parsed.message;
   const JointPublisherConfig& config = *parsed.config;
   EXPECT_TRUE(config.generator.sweep);
@@ -155,13 +177,13 @@ TEST(JointPublisherCommandLine, TheFileMayFollowAHeldPosition) {
 
 TEST(JointPublisherCommandLine, BadValuesExitTwoNamingTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
-      {{"--rate", "0", "r.urdf"}, "--rate: 0 is outside [0.01, 10000]"},
-      {{"--rate", "inf", "r.urdf"}, "'inf' is not a finite number"},
+      {{"--rate", "0", "r.urdf"}, "--rate: '0' is not a number in [0.01, 10000]"},
+      {{"--rate", "inf", "r.urdf"}, "'inf' is not a number in"},
       {{"--position", "elbow", "r.urdf"}, "'elbow' is not JOINT=VALUE"},
       {{"--position", "=1", "r.urdf"}, "'=1' is not JOINT=VALUE"},
       {{"--position", "elbow=nan", "r.urdf"}, "'elbow=nan' is not JOINT=VALUE with a finite VALUE"},
-      {{"--sweep-period", "0", "r.urdf"}, "--sweep-period: 0 is outside"},
-      {{"--duration", "-1", "r.urdf"}, "--duration: -1 is outside"},
+      {{"--sweep-period", "0", "r.urdf"}, "--sweep-period: '0' is not a number in"},
+      {{"--duration", "-1", "r.urdf"}, "--duration: '-1' is not a number in"},
   };
   for (const auto& [arguments, expected] : cases) {
     const auto parsed = parseJointPublisherCommandLine(arguments);
@@ -203,10 +225,10 @@ TEST(UrdfPublisherRun, MissingFileExitsOneNamingIt) {
             "directory\n");
 }
 
-TEST(UrdfPublisherRun, UnusableLcmUrlExitsOneNamingIt) {
+TEST(UrdfPublisherRun, UnusableLcmUrlExitsTwoNamingIt) {
   const ProgramRun run = runUrdfPublisherWith({"--lcm-url", "nonsense://", EXAMPLE_URDF});
-  EXPECT_EQ(run.exit_code, 1);
-  EXPECT_EQ(run.err, "lcmtf-urdf-publisher: cannot open LCM at 'nonsense://'\n");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err, "lcmtf-urdf-publisher: --lcm-url: cannot open LCM at 'nonsense://'\n");
 }
 
 TEST(UrdfPublisherRun, CheckListsTheRobotAndExitsZero) {
@@ -278,6 +300,55 @@ TEST(JointPublisherRun, WithoutAFileItWaitsForADescriptionNoLongerThanItsDuratio
                                  "0.3 s"));
 }
 
+// joint_state_publisher's source_list: what other programs publish wins over the generated.
+TEST(JointPublisherRun, PositionsFromItsSourcesTakeThePlaceOfItsOwn) {
+  const std::string url =
+      lcmtf_test::privateUdpmUrl("JointPublisherRun.PositionsFromItsSourcesTakeThePlaceOfItsOwn");
+  struct Latest {
+    void onState(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {
+      if (state.decode(buffer->data, 0, static_cast<int>(buffer->data_size)) > 0) ++count;
+    }
+    double position(const std::string& joint) const {
+      for (std::size_t i = 0; i < state.name.size(); ++i) {
+        if (state.name[i] == joint) return state.position[i];
+      }
+      return std::nan("");
+    }
+    joint_state_t state;
+    int count = 0;
+  } latest;
+  lcm::LCM lcm(url);
+  lcm.subscribe(kJointStatesChannel, &Latest::onState, &latest);
+  const auto parsed = parseJointPublisherCommandLine({"--lcm-url", url, "--source", "ARM_STATES",
+                                                      "--source", "GRIPPER_STATES", "--rate", "50",
+                                                      "--duration", "1.5", EXAMPLE_URDF});
+  ASSERT_TRUE(parsed.config) << parsed.message;
+  const std::atomic<bool> stop{false};
+  std::ostringstream out, err;
+  auto running = std::async(std::launch::async,
+                            [&] { return runJointPublisher(*parsed.config, stop, out, err); });
+  joint_state_t arm = jointState(1, {"elbow_joint"}, {0.7});
+  joint_state_t gripper = jointState(1, {"gripper_left_finger_joint", "not_a_joint"}, {0.03, 1.0});
+  while (running.wait_for(0ms) != std::future_status::ready) {
+    lcm.publish("ARM_STATES", &arm);
+    lcm.publish("GRIPPER_STATES", &gripper);
+    lcm.handleTimeout(20);
+  }
+  EXPECT_EQ(running.get(), 0) << err.str();
+  ASSERT_GT(latest.count, 10);
+  EXPECT_EQ(latest.position("elbow_joint"), 0.7);
+  EXPECT_EQ(latest.position("gripper_left_finger_joint"), 0.03);
+  EXPECT_EQ(latest.position("gripper_right_finger_joint"), -0.03) << "the mimic follows it";
+  EXPECT_EQ(latest.position("shoulder_pan_joint"), 0.0) << "the rest as generated";
+}
+
+TEST(JointPublisherCommandLine, ASourceCannotBeTheChannelItPublishesOn) {
+  const auto parsed = parseJointPublisherCommandLine({"--source", "JOINT_STATES", "r.urdf"});
+  EXPECT_FALSE(parsed.config);
+  EXPECT_EQ(parsed.exit_code, 2);
+  EXPECT_THAT(parsed.message, HasSubstr("--source JOINT_STATES is the channel it publishes on"));
+}
+
 TEST(JointPublisherRun, ARobotWithoutMovableJointsExitsOneSayingSo) {
   const std::string path = testing::TempDir() + "/rigid.urdf";
   {
@@ -292,13 +363,18 @@ TEST(JointPublisherRun, ARobotWithoutMovableJointsExitsOneSayingSo) {
   std::remove(path.c_str());
 }
 
-TEST(JointPublisherRun, HoldingAnUnknownJointExitsOneNamingIt) {
+TEST(JointPublisherRun, HoldingAnUnknownJointExitsTwoNamingItAndTheJointMeant) {
   const ProgramRun run = runJointPublisherWith(
       {"--lcm-url", "memq://", "--position", "knee=0.1", "--duration", "5", EXAMPLE_URDF});
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(run.err,
             "lcmtf-joint-publisher: --position: robot 'mobile_manipulator' has no movable joint "
             "'knee'\n");
+  const ProgramRun typo = runJointPublisherWith(
+      {"--lcm-url", "memq://", "--position", "elbw_joint=0.1", "--duration", "5", EXAMPLE_URDF});
+  EXPECT_EQ(typo.exit_code, 2);
+  EXPECT_THAT(typo.err, HasSubstr("has no movable joint 'elbw_joint' (did you mean "
+                                  "'elbow_joint'?)"));
 }
 
 TEST(JointPublisherRun, InvalidUrdfExitsOneNamingTheFileAndProblem) {

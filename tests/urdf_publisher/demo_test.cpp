@@ -17,8 +17,8 @@
 #include "lcmtf/message_conversions.hpp"
 #include "lcmtf_urdf/joint_state_generator.hpp"
 #include "lcmtf_urdf/joint_state_processor.hpp"
-#include "program_process.hpp"
 #include "support/buffer_core_helpers.hpp"
+#include "support/child_process.hpp"
 #include "support/test_lcm.hpp"
 #include "urdf_reference.hpp"
 
@@ -27,8 +27,8 @@ namespace {
 
 using lcmtf_test::positionsOf;
 using namespace std::chrono_literals;
+using lcmtf_test::ChildProcess;
 using lcmtf_test::near;
-using lcmtf_test::ProgramProcess;
 using lcmtf_test::ReferenceRobot;
 using testing::HasSubstr;
 
@@ -130,18 +130,18 @@ std::string demoUrl() {
   return lcmtf_test::privateUdpmUrl(std::string("demo.") + info->name());
 }
 
-std::unique_ptr<ProgramProcess> startDemo(const std::vector<std::string>& arguments) {
+std::unique_ptr<ChildProcess> startDemo(const std::vector<std::string>& arguments) {
   setenv("LCMTF_DEMO_BIN", DEMO_BIN_DIR, 1);
   std::vector<std::string> all{DEMO_SCRIPT};
   all.insert(all.end(), arguments.begin(), arguments.end());
-  return std::make_unique<ProgramProcess>("/bin/bash", all);
+  return std::make_unique<ChildProcess>("/bin/bash", all);
 }
 
 TEST(DemoScript, RunsThePublishersAndListenerForItsDurationThenStopsThemAll) {
   const std::string url = demoUrl();
   auto demo = startDemo({"--duration", "3.5", "--lcm-url", url});
-  ASSERT_EQ(demo->waitForExit(20s), 0) << demo->output() << demo->errors();
-  const std::string output = demo->output();
+  ASSERT_EQ(demo->waitForExit(20s), 0) << demo->stdoutText() << demo->stderrText();
+  const std::string output = demo->stdoutText();
   EXPECT_THAT(output, HasSubstr("lcmtf-joint-publisher: 14 joints of robot 'mobile_manipulator' "
                                 "sweeping"));
   EXPECT_THAT(output, HasSubstr("gripper_tcp in base_link: xyz ["));
@@ -154,19 +154,19 @@ TEST(DemoScript, RunsThePublishersAndListenerForItsDurationThenStopsThemAll) {
 TEST(DemoScript, CtrlCStopsEveryProgramItStarted) {
   const std::string url = demoUrl();
   auto demo = startDemo({"--lcm-url", url});
-  ASSERT_TRUE(demo->waitForOutput("joint states from JOINT_STATES", 10s)) << demo->errors();
-  ASSERT_TRUE(demo->waitForOutput("waiting for transforms", 10s)) << demo->errors();
+  ASSERT_TRUE(demo->waitForStdout("joint states from JOINT_STATES", 10s)) << demo->stderrText();
+  ASSERT_TRUE(demo->waitForStdout("waiting for transforms", 10s)) << demo->stderrText();
   EXPECT_EQ(processesMentioning(url).size(), 4u);  // the script and its three programs
   demo->signal(SIGINT);
   EXPECT_EQ(demo->waitForExit(10s), 130);
-  EXPECT_THAT(demo->output(), HasSubstr("lcmtf-urdf-publisher: stopped after "));
+  EXPECT_THAT(demo->stdoutText(), HasSubstr("lcmtf-urdf-publisher: stopped after "));
   EXPECT_THAT(processesMentioning(url), testing::IsEmpty());
 }
 
 TEST(DemoScript, UnknownArgumentIsRefused) {
   auto demo = startDemo({"--speed", "9"});
   EXPECT_EQ(demo->waitForExit(10s), 2);
-  EXPECT_THAT(demo->errors(), HasSubstr("demo.sh: unknown argument '--speed'"));
+  EXPECT_THAT(demo->stderrText(), HasSubstr("demo.sh: unknown argument '--speed'"));
 }
 
 }  // namespace

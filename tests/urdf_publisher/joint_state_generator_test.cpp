@@ -2,6 +2,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -41,24 +42,43 @@ class JointStateGeneratorTest : public testing::Test {
   const RobotModel robot = loadRobotModel(EXAMPLE_URDF);
 };
 
-TEST_F(JointStateGeneratorTest, EveryMovableJointThatFollowsNoOtherIsPublished) {
+TEST_F(JointStateGeneratorTest, EveryMovableJointIsPublishedTheMimicJointsLast) {
   const JointStateGenerator generator(robot);
-  EXPECT_EQ(generator.jointNames().size(), 14u);
+  EXPECT_EQ(generator.jointNames().size(), 15u);
+  EXPECT_EQ(generator.mimicCount(), 1u);
   EXPECT_THAT(generator.jointNames(), Contains("gripper_left_finger_joint"));
-  EXPECT_THAT(generator.jointNames(), Not(Contains("gripper_right_finger_joint")));
+  EXPECT_EQ(generator.jointNames().back(), "gripper_right_finger_joint");
   EXPECT_THAT(generator.jointNames(), Not(Contains("camera_joint")));
+}
+
+// As joint_state_publisher does: a mimic joint is published at the position its leader gives.
+TEST_F(JointStateGeneratorTest, MimicJointsFollowTheirLeadersInEveryState) {
+  JointStateGeneratorOptions options;
+  options.sweep = true;
+  const JointStateGenerator generator(robot, options);
+  const auto index = [&](const std::string& name) {
+    const auto& names = generator.jointNames();
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  for (double t : {0.0, 0.7, 3.1}) {
+    const joint_state_t state = generator.stateAt(t, fromUtime(kStamp));
+    const std::size_t left = index("gripper_left_finger_joint");
+    const std::size_t right = index("gripper_right_finger_joint");
+    EXPECT_EQ(state.position[right], -state.position[left]) << t;
+    EXPECT_EQ(state.velocity[right], -state.velocity[left]) << t;
+  }
 }
 
 TEST_F(JointStateGeneratorTest, StatesAreCompleteAndStamped) {
   const joint_state_t state = JointStateGenerator(robot).stateAt(1.0, fromUtime(kStamp));
   EXPECT_EQ(state.utime, kStamp);
-  EXPECT_EQ(state.num_joints, 14);
-  EXPECT_EQ(state.num_positions, 14);
-  EXPECT_EQ(state.num_velocities, 14);
+  EXPECT_EQ(state.num_joints, 15);
+  EXPECT_EQ(state.num_positions, 15);
+  EXPECT_EQ(state.num_velocities, 15);
   EXPECT_EQ(state.num_efforts, 0);
-  EXPECT_EQ(state.name.size(), 14u);
-  EXPECT_EQ(state.position.size(), 14u);
-  EXPECT_EQ(state.velocity.size(), 14u);
+  EXPECT_EQ(state.name.size(), 15u);
+  EXPECT_EQ(state.position.size(), 15u);
+  EXPECT_EQ(state.velocity.size(), 15u);
 }
 
 TEST_F(JointStateGeneratorTest, RestIsZeroOrTheMiddleOfLimitsThatExcludeZero) {

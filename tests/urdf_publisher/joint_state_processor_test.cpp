@@ -244,19 +244,50 @@ TEST_F(JointStateProcessorTest, IgnoreTimestampStampsWithTheArrivalTime) {
   EXPECT_EQ(batch->transforms[0].utime, kStamp + 777);
 }
 
-TEST_F(JointStateProcessorTest, PositionsOfFixedMimicAndUnknownTypeJointsAreIgnoredOncePerName) {
+TEST_F(JointStateProcessorTest, PositionsOfFixedJointsAreIgnoredOncePerName) {
   JointStateProcessor processor(robot, options());
   for (int k = 0; k < 2; ++k) {
-    const tf_message_t* batch = processor.process(
-        jointState(kStamp + k, {"gripper_right_finger_joint", "camera_joint", "elbow_joint"},
-                   {0.02, 1.0, 0.1}));
+    const tf_message_t* batch =
+        processor.process(jointState(kStamp + k, {"camera_joint", "elbow_joint"}, {1.0, 0.1}));
     EXPECT_THAT(children(batch), ElementsAre("forearm_link"));
   }
-  EXPECT_EQ(processor.statistics().ignored_joints, 4u);
-  ASSERT_EQ(reports.size(), 2u);
-  EXPECT_THAT(reports[0], HasSubstr("'gripper_right_finger_joint': it is a mimic joint, which "
-                                    "follows 'gripper_left_finger_joint'"));
-  EXPECT_THAT(reports[1], HasSubstr("'camera_joint': it is a fixed joint"));
+  EXPECT_EQ(processor.statistics().ignored_joints, 2u);
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_THAT(reports[0], HasSubstr("'camera_joint': it is a fixed joint"));
+}
+
+// As in robot_state_publisher 2: the message's own value for a mimic joint wins.
+TEST_F(JointStateProcessorTest, AMimicPositionGivenInTheJointStateWinsOverItsLeaders) {
+  JointStateProcessor processor(robot, options());
+  const tf_message_t* batch = processor.process(jointState(
+      kStamp, {"gripper_left_finger_joint", "gripper_right_finger_joint"}, {0.03, -0.01}));
+  ASSERT_THAT(children(batch),
+              ElementsAre("gripper_left_finger_link", "gripper_right_finger_link"));
+  // Its leader would put it at -0.03: the right finger's origin is 0.01 to the right.
+  EXPECT_NEAR(find(batch, "gripper_right_finger_link")->translation.y, -0.01 - 0.01, 1e-15);
+  EXPECT_EQ(processor.statistics().given_mimic_positions, 1u);
+  EXPECT_TRUE(reports.empty());
+}
+
+TEST_F(JointStateProcessorTest, AMimicGivenWithoutItsLeaderIsPublishedAlone) {
+  JointStateProcessor processor(robot, options());
+  const tf_message_t* batch =
+      processor.process(jointState(kStamp, {"gripper_right_finger_joint"}, {-0.02}));
+  ASSERT_THAT(children(batch), ElementsAre("gripper_right_finger_link"));
+  EXPECT_NEAR(batch->transforms[0].translation.y, -0.01 - 0.02, 1e-15);
+}
+
+TEST_F(JointStateProcessorTest, ANewRobotReplacesTheJointsAndTheCountsGoOn) {
+  JointStateProcessor processor(robot, options());
+  processor.process(jointState(kStamp, {"elbow_joint"}, {0.1}));
+  processor.setRobot(parseRobotModel(
+      "<robot name='r'><link name='a'/><link name='b'/>"
+      "<joint name='j1' type='continuous'><parent link='a'/><child link='b'/></joint></robot>",
+      "new"));
+  EXPECT_THAT(children(processor.process(jointState(kStamp + 1, {"j1"}, {0.2}))), ElementsAre("b"));
+  EXPECT_EQ(processor.process(jointState(kStamp + 2, {"elbow_joint"}, {0.1})), nullptr);
+  EXPECT_EQ(processor.statistics().batches, 2u);
+  EXPECT_EQ(processor.statistics().unknown_joints, 1u);
 }
 
 TEST_F(JointStateProcessorTest, PositionOfAFloatingJointIsIgnoredWithHowToPublishIt) {

@@ -24,8 +24,8 @@
 #include "joint_state_helpers.hpp"
 #include "lcmtf/transform_listener.hpp"
 #include "lcmtf/wire_decode.hpp"
-#include "program_process.hpp"
 #include "support/buffer_core_helpers.hpp"
+#include "support/child_process.hpp"
 #include "support/test_lcm.hpp"
 #include "urdf_reference.hpp"
 
@@ -34,8 +34,8 @@ namespace {
 
 using lcmtf_test::positionsOf;
 using namespace std::chrono_literals;
+using lcmtf_test::ChildProcess;
 using lcmtf_test::near;
-using lcmtf_test::ProgramProcess;
 using lcmtf_test::ReferenceRobot;
 using testing::HasSubstr;
 
@@ -133,11 +133,11 @@ TEST(UrdfPublisherProcess, ListenerLooksUpTheGripperAsTheSweepingJointStatesPlac
   Tap<joint_state_t> joint_states(url, kJointStatesChannel);
   Buffer buffer;
   TransformListener listener(buffer, onUrl(url));
-  ProgramProcess publisher(URDF_PUBLISHER_PROGRAM, {"--lcm-url", url, EXAMPLE_URDF});
-  ASSERT_TRUE(publisher.waitForOutput("transforms to TF", kStartup)) << publisher.errors();
-  ProgramProcess joints(JOINT_PUBLISHER_PROGRAM, {"--lcm-url", url, "--sweep", "--sweep-period",
-                                                  "2", "--rate", "100", EXAMPLE_URDF});
-  ASSERT_TRUE(joint_states.waitFor(20, kStartup)) << joints.errors();
+  ChildProcess publisher(URDF_PUBLISHER_PROGRAM, {"--lcm-url", url, EXAMPLE_URDF});
+  ASSERT_TRUE(publisher.waitForStdout("transforms to TF", kStartup)) << publisher.stderrText();
+  ChildProcess joints(JOINT_PUBLISHER_PROGRAM, {"--lcm-url", url, "--sweep", "--sweep-period", "2",
+                                                "--rate", "100", EXAMPLE_URDF});
+  ASSERT_TRUE(joint_states.waitFor(20, kStartup)) << joints.stderrText();
 
   const ReferenceRobot reference(EXAMPLE_URDF);
   int checked = 0;
@@ -162,14 +162,14 @@ TEST(UrdfPublisherProcess, ListenerLooksUpTheGripperAsTheSweepingJointStatesPlac
   }
   EXPECT_GE(checked, 15);
   EXPECT_EQ(listener.statistics().rejected_transforms, 0u);
-  EXPECT_EQ(publisher.errors(), "");
+  EXPECT_EQ(publisher.stderrText(), "");
 }
 
 TEST(UrdfPublisherProcess, LateJoinerGetsTheFixedJointsAndTheDescription) {
   const std::string url = testUrl();
-  ProgramProcess publisher(URDF_PUBLISHER_PROGRAM,
-                           {"--lcm-url", url, "--static-resend-period", "0", EXAMPLE_URDF});
-  ASSERT_TRUE(publisher.waitForOutput("transforms to TF", kStartup)) << publisher.errors();
+  ChildProcess publisher(URDF_PUBLISHER_PROGRAM,
+                         {"--lcm-url", url, "--static-resend-period", "0", EXAMPLE_URDF});
+  ASSERT_TRUE(publisher.waitForStdout("transforms to TF", kStartup)) << publisher.stderrText();
   std::this_thread::sleep_for(200ms);
 
   Buffer buffer;
@@ -193,18 +193,18 @@ TEST(UrdfPublisherProcess, LateJoinerGetsTheFixedJointsAndTheDescription) {
 
 TEST(UrdfPublisherProcess, PublisherWithoutAFileTakesTheRobotFromTheDescriptionChannel) {
   const std::string url = testUrl();
-  ProgramProcess copy(URDF_PUBLISHER_PROGRAM,
-                      {"--lcm-url", url, "--frame-prefix", "copy/", "--tf-channel", "TF"});
-  ASSERT_TRUE(copy.waitForOutput("waiting for a robot description", kStartup)) << copy.errors();
-  ProgramProcess original(URDF_PUBLISHER_PROGRAM, {"--lcm-url", url, EXAMPLE_URDF});
+  ChildProcess copy(URDF_PUBLISHER_PROGRAM,
+                    {"--lcm-url", url, "--frame-prefix", "copy/", "--tf-channel", "TF"});
+  ASSERT_TRUE(copy.waitForStdout("waiting for a robot description", kStartup)) << copy.stderrText();
+  ChildProcess original(URDF_PUBLISHER_PROGRAM, {"--lcm-url", url, EXAMPLE_URDF});
   ASSERT_TRUE(
-      copy.waitForOutput("robot 'mobile_manipulator' from ROBOT_DESCRIPTION from "
+      copy.waitForStdout("robot 'mobile_manipulator' from ROBOT_DESCRIPTION from "
                          "lcmtf-urdf-publisher@",
                          kStartup))
-      << copy.output() << copy.errors();
+      << copy.stdoutText() << copy.stderrText();
   Buffer buffer;
   TransformListener listener(buffer, onUrl(url));
-  ProgramProcess joints(JOINT_PUBLISHER_PROGRAM, {"--lcm-url", url, "--rate", "50", EXAMPLE_URDF});
+  ChildProcess joints(JOINT_PUBLISHER_PROGRAM, {"--lcm-url", url, "--rate", "50", EXAMPLE_URDF});
   std::string why;
   EXPECT_TRUE(buffer.canTransform("copy/base_link", "copy/gripper_tcp", kLatestTime, 5s, &why))
       << why;
@@ -213,8 +213,8 @@ TEST(UrdfPublisherProcess, PublisherWithoutAFileTakesTheRobotFromTheDescriptionC
 
 TEST(UrdfPublisherProcess, BadJointStatesOnTheNetworkAreReportedAndTheRestPublished) {
   const std::string url = testUrl();
-  ProgramProcess publisher(URDF_PUBLISHER_PROGRAM, {"--lcm-url", url, EXAMPLE_URDF});
-  ASSERT_TRUE(publisher.waitForOutput("transforms to TF", kStartup)) << publisher.errors();
+  ChildProcess publisher(URDF_PUBLISHER_PROGRAM, {"--lcm-url", url, EXAMPLE_URDF});
+  ASSERT_TRUE(publisher.waitForStdout("transforms to TF", kStartup)) << publisher.stderrText();
   Tap<tf_message_t> tf(url, kTfChannel);
   lcm::LCM lcm(url);
   const std::vector<std::uint8_t> garbage(64, 0x5a);
@@ -237,47 +237,51 @@ TEST(UrdfPublisherProcess, BadJointStatesOnTheNetworkAreReportedAndTheRestPublis
   }
   publisher.signal(SIGTERM);
   ASSERT_EQ(publisher.waitForExit(5s), 0);
-  const std::string errors = publisher.errors();
+  const std::string errors = publisher.stderrText();
   EXPECT_THAT(errors, HasSubstr("refused a joint state that does not decode"));
   EXPECT_THAT(errors, HasSubstr("ignored joint 'ghost'"));
   EXPECT_THAT(errors, HasSubstr("skipped joint 'wrist_1_joint' at position nan"));
   EXPECT_EQ(std::count(errors.begin(), errors.end(), '\n'), 3) << errors;
-  EXPECT_THAT(publisher.output(), HasSubstr("stopped after 6 joint states, 3 batches of 3 "
-                                            "transforms; 3 malformed; 3 non-finite positions "
-                                            "skipped; 3 unknown joint names"));
+  EXPECT_THAT(publisher.stdoutText(), HasSubstr("stopped after 6 joint states, 3 batches of 3 "
+                                                "transforms; 3 malformed; 3 non-finite positions "
+                                                "skipped; 3 unknown joint names"));
 }
 
 TEST(UrdfPublisherProcess, SigintAndSigtermStopBothProgramsCleanly) {
   const std::string url = testUrl();
-  ProgramProcess publisher(URDF_PUBLISHER_PROGRAM, {"--lcm-url", url, EXAMPLE_URDF});
-  ASSERT_TRUE(publisher.waitForOutput("transforms to TF", kStartup)) << publisher.errors();
+  ChildProcess publisher(URDF_PUBLISHER_PROGRAM, {"--lcm-url", url, EXAMPLE_URDF});
+  ASSERT_TRUE(publisher.waitForStdout("transforms to TF", kStartup)) << publisher.stderrText();
   Tap<tf_message_t> tf(url, kTfChannel);
-  ProgramProcess joints(JOINT_PUBLISHER_PROGRAM, {"--lcm-url", url, "--rate", "0.2", EXAMPLE_URDF});
-  ASSERT_TRUE(tf.waitFor(1, kStartup)) << joints.errors();
+  ChildProcess joints(JOINT_PUBLISHER_PROGRAM, {"--lcm-url", url, "--rate", "0.2", EXAMPLE_URDF});
+  ASSERT_TRUE(tf.waitFor(1, kStartup)) << joints.stderrText();
   const auto start = std::chrono::steady_clock::now();
   publisher.signal(SIGINT);
   joints.signal(SIGTERM);  // mid-way through a 5 s wait between two joint states
   EXPECT_EQ(publisher.waitForExit(3s), 0);
   EXPECT_EQ(joints.waitForExit(3s), 0);
   EXPECT_LT(std::chrono::steady_clock::now() - start, 1s);
-  EXPECT_THAT(publisher.output(), HasSubstr("lcmtf-urdf-publisher: stopped after 1 joint states"));
-  EXPECT_THAT(joints.output(), HasSubstr("lcmtf-joint-publisher: stopped after 1 joint states"));
+  EXPECT_THAT(publisher.stdoutText(),
+              HasSubstr("lcmtf-urdf-publisher: stopped after 1 joint states"));
+  EXPECT_THAT(joints.stdoutText(),
+              HasSubstr("lcmtf-joint-publisher: stopped after 1 joint states"));
 }
 
 TEST(UrdfPublisherProcess, InvalidRobotsExitNonZeroNamingTheFileAndProblem) {
   const std::string broken = testing::TempDir() + "/no_root.urdf";
   std::ofstream(broken) << "<robot name='r'><link name='a'/><link name='b'/></robot>";
   for (const char* program : {URDF_PUBLISHER_PROGRAM, JOINT_PUBLISHER_PROGRAM}) {
-    ProgramProcess missing(program, {"--lcm-url", testUrl(), "/nonexistent/robot.urdf"});
+    ChildProcess missing(program, {"--lcm-url", testUrl(), "/nonexistent/robot.urdf"});
     EXPECT_EQ(missing.waitForExit(kStartup), 1) << program;
-    EXPECT_THAT(missing.errors(), HasSubstr("/nonexistent/robot.urdf: cannot open: No such file"));
-    ProgramProcess no_root(program, {"--lcm-url", testUrl(), broken});
+    EXPECT_THAT(missing.stderrText(),
+                HasSubstr("/nonexistent/robot.urdf: cannot open: No such file"));
+    ChildProcess no_root(program, {"--lcm-url", testUrl(), broken});
     EXPECT_EQ(no_root.waitForExit(kStartup), 1) << program;
-    EXPECT_THAT(no_root.errors(), HasSubstr(broken + ": invalid URDF: Failed to find root link: "
-                                                     "Two root links found"));
-    ProgramProcess bad_option(program, {"--rate-of-fire", "9", broken});
+    EXPECT_THAT(no_root.stderrText(),
+                HasSubstr(broken + ": invalid URDF: Failed to find root link: "
+                                   "Two root links found"));
+    ChildProcess bad_option(program, {"--rate-of-fire", "9", broken});
     EXPECT_EQ(bad_option.waitForExit(kStartup), 2) << program;
-    EXPECT_THAT(bad_option.errors(), HasSubstr("--rate-of-fire"));
+    EXPECT_THAT(bad_option.stderrText(), HasSubstr("--rate-of-fire"));
   }
   std::remove(broken.c_str());
 }
@@ -291,10 +295,10 @@ TEST(UrdfPublisherProcess, CheckRefusesFilesTooDeepOrWithTooManyLinksNamingTheLi
       {deep, ": elements nested 40001 deep; the limit is 256"},
       {chain, ": 150000 links; the limit is 10000"}};
   for (const auto& [file, refusal] : refusals) {
-    ProgramProcess check(URDF_PUBLISHER_PROGRAM, {"--check", file});
+    ChildProcess check(URDF_PUBLISHER_PROGRAM, {"--check", file});
     EXPECT_EQ(check.waitForExit(kStartup), 1) << file;
-    EXPECT_EQ(check.errors(), "lcmtf-urdf-publisher: " + file + refusal + "\n");
-    EXPECT_EQ(check.output(), "");
+    EXPECT_EQ(check.stderrText(), "lcmtf-urdf-publisher: " + file + refusal + "\n");
+    EXPECT_EQ(check.stdoutText(), "");
   }
   std::remove(deep.c_str());
   std::remove(chain.c_str());
@@ -306,24 +310,25 @@ TEST(UrdfPublisherProcess, ProgramsWaitingForADescriptionReportATooDeepOneOnceAn
   for (const std::string program : {URDF_PUBLISHER_PROGRAM, JOINT_PUBLISHER_PROGRAM}) {
     const std::string url = testUrl();
     Tap<resend_request_t> requests(url, kRobotDescriptionRequestChannel);
-    ProgramProcess waiting(program, {"--lcm-url", url});
-    ASSERT_TRUE(requests.waitFor(1, kStartup)) << waiting.errors();  // it listens from then on
+    ChildProcess waiting(program, {"--lcm-url", url});
+    ASSERT_TRUE(requests.waitFor(1, kStartup)) << waiting.stderrText();  // it listens from then on
     lcm::LCM& lcm = requests.lcm();
     for (int k = 0; k < 3; ++k) {
       sendDescription(lcm, tooDeepRobot());
       std::this_thread::sleep_for(100ms);
     }
-    ASSERT_TRUE(waiting.waitForErrors("the limit is 256", kStartup)) << waiting.errors();
-    EXPECT_EQ(waiting.waitForExit(100ms), std::nullopt) << waiting.errors();
+    ASSERT_TRUE(waiting.waitForStderr("the limit is 256", kStartup)) << waiting.stderrText();
+    EXPECT_EQ(waiting.waitForExit(100ms), std::nullopt) << waiting.stderrText();
 
     sendDescription(lcm, valid.str());
-    ASSERT_TRUE(waiting.waitForOutput("robot 'mobile_manipulator'", kStartup))
-        << program << waiting.output() << waiting.errors();
-    EXPECT_THAT(waiting.output(),
+    ASSERT_TRUE(waiting.waitForStdout("robot 'mobile_manipulator'", kStartup))
+        << program << waiting.stdoutText() << waiting.stderrText();
+    EXPECT_THAT(waiting.stdoutText(),
                 HasSubstr("refused 3 of the 4 robot descriptions heard on ROBOT_DESCRIPTION"));
-    EXPECT_EQ(waiting.errors(), std::filesystem::path(program).filename().string() +
-                                    ": refused a robot description: ROBOT_DESCRIPTION from sender: "
-                                    "elements nested 40001 deep; the limit is 256\n");
+    EXPECT_EQ(waiting.stderrText(),
+              std::filesystem::path(program).filename().string() +
+                  ": refused a robot description: ROBOT_DESCRIPTION from sender: "
+                  "elements nested 40001 deep; the limit is 256\n");
   }
 }
 

@@ -229,6 +229,62 @@ TEST_F(UrdfPublisherTest, ADescriptionFromTheNetworkIsNotRepublished) {
   EXPECT_EQ(statics_.messages.size(), 1u);
 }
 
+TEST_F(UrdfPublisherTest, ANewDescriptionReplacesTheRobotAndItsStatics) {
+  UrdfPublisherOptions following = options();
+  following.publish_description = false;
+  following.follow_description = true;
+  UrdfPublisher publisher(lcm_, robot_, following);
+  handleAll();
+  const robot_description_t small = makeRobotDescription(
+      parseRobotModel("<robot name='small'><link name='a'/><link name='b'/><link name='c'/>"
+                      "<joint name='mount' type='fixed'><parent link='a'/><child link='b'/>"
+                      "</joint><joint name='j1' type='continuous'><parent link='b'/>"
+                      "<child link='c'/></joint></robot>",
+                      "test"),
+      "owner");
+  for (int k = 0; k < 2; ++k) {  // the same description again changes nothing
+    lcm_.publish(kRobotDescriptionChannel, &small);
+    handleAll();
+    publisher.poll();
+    handleAll();
+  }
+  EXPECT_EQ(publisher.robotsReplaced(), 1u);
+  EXPECT_EQ(publisher.robot().name, "small");
+  const resend_request_t ask = request();
+  lcm_.publish(kTfStaticRequestChannel, &ask);
+  handleAll();
+  ASSERT_GE(statics_.messages.size(), 2u);
+  for (const tf_message_t* answer : {&statics_.messages[1], &statics_.messages.back()}) {
+    ASSERT_EQ(answer->transforms.size(), 1u) << "the old robot's statics are sent no more";
+    EXPECT_EQ(answer->transforms[0].child_frame, "b");
+  }
+  const joint_state_t state = jointState(kStamp, {{"j1", 0.5}, {"elbow_joint", 0.1}});
+  lcm_.publish(kJointStatesChannel, &state);
+  handleAll();
+  ASSERT_EQ(tf_.messages.size(), 1u);
+  ASSERT_EQ(tf_.messages[0].transforms.size(), 1u);
+  EXPECT_EQ(tf_.messages[0].transforms[0].child_frame, "c");
+  EXPECT_EQ(publisher.statistics().unknown_joints, 1u);
+}
+
+TEST_F(UrdfPublisherTest, ABadNewDescriptionKeepsTheRobotAndIsReportedOnce) {
+  UrdfPublisherOptions following = options();
+  following.follow_description = true;
+  UrdfPublisher publisher(lcm_, robot_, following);
+  robot_description_t broken = makeRobotDescription(robot_, "owner");
+  broken.urdf = "<robot name='broken'><link name='a'/>";
+  for (int k = 0; k < 3; ++k) {
+    lcm_.publish(kRobotDescriptionChannel, &broken);
+    handleAll();
+    publisher.poll();
+  }
+  EXPECT_EQ(publisher.robotsReplaced(), 0u);
+  EXPECT_EQ(publisher.robot().name, "mobile_manipulator");
+  EXPECT_EQ(publisher.descriptionsRefused(), 1u);
+  ASSERT_EQ(reports_.size(), 1u);
+  EXPECT_THAT(reports_[0], HasSubstr("kept the robot, refused a new robot description: "));
+}
+
 TEST_F(UrdfPublisherTest, EveryChannelCanBeChanged) {
   UrdfPublisherOptions renamed = options();
   renamed.joint_states_channel = "ARM_JOINTS";

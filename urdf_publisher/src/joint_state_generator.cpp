@@ -6,9 +6,13 @@
 #include <map>
 #include <stdexcept>
 
-#include "format_number.hpp"
+#include "lcmtf/programs/closest_names.hpp"
+#include "lcmtf/programs/number_text.hpp"
+#include "lcmtf_urdf/joint_motion.hpp"
 
 namespace lcmtf::urdf {
+
+using programs::formatNumber;
 
 namespace {
 
@@ -22,7 +26,10 @@ std::map<std::string, double> checkedHeld(const RobotModel& robot,
   for (const auto& [name, position] : options.held) {
     const MovableJoint* joint = robot.findMovableJoint(name);
     if (!joint) {
-      throw std::invalid_argument("robot '" + robot.name + "' has no movable joint '" + name + "'");
+      std::vector<std::string> movable;
+      for (const MovableJoint& each : robot.movable_joints) movable.push_back(each.name);
+      throw std::invalid_argument("robot '" + robot.name + "' has no movable joint '" + name + "'" +
+                                  programs::didYouMean(name, movable));
     }
     if (joint->resolved_mimic) {
       throw std::invalid_argument("joint '" + name + "' is a mimic joint: it follows '" +
@@ -80,20 +87,46 @@ JointStateGenerator::JointStateGenerator(const RobotModel& robot,
     }
     motions_.push_back(motion);
   }
+  for (const MovableJoint& joint : robot.movable_joints) {
+    if (!joint.resolved_mimic) continue;
+    const auto leader = std::find(names_.begin(), names_.end(), joint.resolved_mimic->leader);
+    mimics_.push_back({static_cast<std::size_t>(leader - names_.begin()), *joint.resolved_mimic});
+  }
+  for (const MovableJoint& joint : robot.movable_joints) {
+    if (joint.resolved_mimic) names_.push_back(joint.name);
+  }
 }
 
-joint_state_t JointStateGenerator::stateAt(double elapsed_seconds, TimePoint stamp) const {
+joint_state_t JointStateGenerator::stateAt(double elapsed_seconds, TimePoint stamp,
+                                           const std::vector<std::optional<double>>& given) const {
+  const auto givenAt = [&given](std::size_t j) {
+    return j < given.size() ? given[j] : std::optional<double>();
+  };
   joint_state_t state;
   state.utime = toUtime(stamp);
   state.name = names_;
   state.position.reserve(motions_.size());
   state.velocity.reserve(motions_.size());
-  for (const Motion& m : motions_) {
+  // A position given from elsewhere comes without a velocity: zero is said for it.
+  for (std::size_t j = 0; j < motions_.size(); ++j) {
+    const Motion& m = motions_[j];
     const double angle = m.phase + m.angular_frequency * elapsed_seconds;
     const double position =
         m.center + m.amplitude * std::sin(angle) + m.turn_rate * elapsed_seconds;
-    state.position.push_back(std::clamp(position, m.lower, m.upper));
-    state.velocity.push_back(m.amplitude * m.angular_frequency * std::cos(angle) + m.turn_rate);
+    const std::optional<double> from_elsewhere = givenAt(j);
+    state.position.push_back(from_elsewhere ? *from_elsewhere
+                                            : std::clamp(position, m.lower, m.upper));
+    state.velocity.push_back(
+        from_elsewhere ? 0.0 : m.amplitude * m.angular_frequency * std::cos(angle) + m.turn_rate);
+  }
+  for (std::size_t f = 0; f < mimics_.size(); ++f) {
+    const Follower& follower = mimics_[f];
+    const std::optional<double> from_elsewhere = givenAt(motions_.size() + f);
+    state.position.push_back(
+        from_elsewhere ? *from_elsewhere
+                       : mimicPosition(follower.relation, state.position[follower.leader]));
+    state.velocity.push_back(
+        from_elsewhere ? 0.0 : follower.relation.multiplier * state.velocity[follower.leader]);
   }
   state.num_joints = static_cast<std::int32_t>(state.name.size());
   state.num_positions = static_cast<std::int32_t>(state.position.size());

@@ -5,8 +5,8 @@
 #include <unordered_map>
 
 #include "joint_state_senders.hpp"
+#include "lcmtf/programs/report_once.hpp"
 #include "lcmtf_urdf/joint_motion.hpp"
-#include "once_reporter.hpp"
 #include "publish_schedule.hpp"
 
 namespace lcmtf::urdf {
@@ -31,6 +31,7 @@ struct Output {
 struct Follower {
   std::size_t output = 0;
   Mimic relation;
+  std::uint32_t given = 0;  // index of its GivenMimic
 };
 
 // A movable joint that follows no other: joint states set it, and it carries its followers.
@@ -44,6 +45,15 @@ struct Driven {
 struct Selected {
   std::uint32_t driven = 0;
   double position = 0.0;
+};
+
+// A mimic joint as a joint state may give it: its own position wins over its leader's relation.
+struct GivenMimic {
+  std::size_t output = 0;
+  std::uint32_t leader = 0;  // index into the driven joints
+  std::uint64_t seen_in_message = 0;
+  double position = 0.0;
+  PublishSchedule schedule;  // when it is given without its leader
 };
 
 const char* kOnce = " (reported once; later ones are only counted)";
@@ -73,9 +83,22 @@ class JointStateProcessor::Impl {
  public:
   Impl(const RobotModel& robot, JointStateOptions options_in)
       : options(std::move(options_in)),
-        robot_name_(robot.name),
         period_us_(periodMicros(options.publish_frequency)),
         reporter_(options.reporter) {
+    setRobot(robot);
+    batch_.authority = options.authority;
+  }
+
+  // The joints of `robot` take the place of the previous robot's; statistics and senders stay.
+  void setRobot(const RobotModel& robot) {
+    robot_name_ = robot.name;
+    outputs_.clear();
+    driven_.clear();
+    given_mimics_.clear();
+    unsupported_types_.clear();
+    entries_.clear();
+    cached_names_.clear();
+    cached_entries_.clear();
     std::unordered_map<std::string, std::size_t> output_of;
     for (const MovableJoint& joint : robot.movable_joints) {
       output_of[joint.name] = outputs_.size();
@@ -85,7 +108,9 @@ class JointStateProcessor::Impl {
     for (std::size_t o = 0; o < outputs_.size(); ++o) {
       const MovableJoint& joint = outputs_[o].joint;
       if (joint.resolved_mimic) {
-        entries_[joint.name] = {EntryKind::kMimic, static_cast<std::uint32_t>(o)};
+        entries_[joint.name] = {EntryKind::kMimic,
+                                static_cast<std::uint32_t>(given_mimics_.size())};
+        given_mimics_.push_back({o, 0, 0, 0.0, {}});
       } else {
         entries_[joint.name] = {EntryKind::kDriven, static_cast<std::uint32_t>(driven_.size())};
         driven_.push_back({o, {}, {}, 0});
@@ -94,8 +119,10 @@ class JointStateProcessor::Impl {
     for (const Output& output : outputs_) {
       const auto& mimic = output.joint.resolved_mimic;
       if (!mimic) continue;
-      driven_[entries_.at(mimic->leader).index].followers.push_back(
-          {output_of.at(output.joint.name), *mimic});
+      const std::uint32_t leader = entries_.at(mimic->leader).index;
+      const std::uint32_t given = entries_.at(output.joint.name).index;
+      driven_[leader].followers.push_back({output_of.at(output.joint.name), *mimic, given});
+      given_mimics_[given].leader = leader;
     }
     for (const FixedJoint& joint : robot.fixed_joints)
       entries_[joint.name] = {EntryKind::kFixed, 0};
@@ -103,7 +130,6 @@ class JointStateProcessor::Impl {
       entries_[robot.unsupported_joints[u].name] = {EntryKind::kUnsupported, u};
       unsupported_types_.push_back(robot.unsupported_joints[u].type);
     }
-    batch_.authority = options.authority;
   }
 
   tf_message_t* process(const void* data, std::size_t size, TimePoint arrival) {
@@ -140,10 +166,10 @@ class JointStateProcessor::Impl {
     }
     const std::int64_t stamp = options.ignore_timestamp ? toUtime(arrival) : state.utime;
     select(state);
-    if (selected_.empty()) return nullptr;
+    if (selected_.empty() && given_alone_.empty()) return nullptr;
     if (period_us_ > 0) {
       keepOnlyDue(stamp);
-      if (selected_.empty()) {
+      if (selected_.empty() && given_alone_.empty()) {
         ++statistics.rate_limited;
         return nullptr;
       }
@@ -174,31 +200,57 @@ class JointStateProcessor::Impl {
 
   void select(const joint_state_t& state) {
     selected_.clear();
+    given_this_message_.clear();
+    given_alone_.clear();
     ++message_serial_;
     for (std::size_t i = 0; i < state.name.size(); ++i) {
       const std::string& name = state.name[i];
       const Entry entry = entryFor(i, name);
+      if (entry.kind == EntryKind::kMimic) {
+        give(entry.index, name, state.position[i]);
+        continue;
+      }
       if (entry.kind != EntryKind::kDriven) {
         skip(entry, name);
         continue;
       }
-      Driven& driven = driven_[entry.index];
-      if (driven.seen_in_message == message_serial_) {
-        ++statistics.duplicate_joints;
-        reporter_.report("duplicate " + name,
-                         "joint '" + name +
-                             "' appears twice in one joint state; its first finite value is "
-                             "used (reported once per joint)");
-        continue;
-      }
       const double position = state.position[i];
-      if (!std::isfinite(position)) {
-        reportNonFinite(name, position);
-        continue;
+      if (firstFinite(driven_[entry.index].seen_in_message, name, position)) {
+        selected_.push_back({entry.index, position});
       }
-      driven.seen_in_message = message_serial_;
-      selected_.push_back({entry.index, position});
     }
+    for (const std::uint32_t given : given_this_message_) {
+      const GivenMimic& mimic = given_mimics_[given];
+      if (driven_[mimic.leader].seen_in_message != message_serial_) given_alone_.push_back(given);
+    }
+  }
+
+  // As robot_state_publisher does, a mimic joint's position in the message wins over the one
+  // its leader's would give.
+  void give(std::uint32_t index, const std::string& name, double position) {
+    GivenMimic& mimic = given_mimics_[index];
+    if (!firstFinite(mimic.seen_in_message, name, position)) return;
+    ++statistics.given_mimic_positions;
+    mimic.position = position;
+    given_this_message_.push_back(index);
+  }
+
+  // Whether this is the first finite position of a joint in the message; notes it seen then.
+  bool firstFinite(std::uint64_t& seen_in_message, const std::string& name, double position) {
+    if (seen_in_message == message_serial_) {
+      ++statistics.duplicate_joints;
+      reporter_.report("duplicate " + name,
+                       "joint '" + name +
+                           "' appears twice in one joint state; its first finite value is "
+                           "used (reported once per joint)");
+      return false;
+    }
+    if (!std::isfinite(position)) {
+      reportNonFinite(name, position);
+      return false;
+    }
+    seen_in_message = message_serial_;
+    return true;
   }
 
   void skip(const Entry& entry, const std::string& name) {
@@ -210,10 +262,7 @@ class JointStateProcessor::Impl {
     }
     ++statistics.ignored_joints;
     std::string why;
-    if (entry.kind == EntryKind::kMimic) {
-      why = "a mimic joint, which follows '" + outputs_[entry.index].joint.resolved_mimic->leader +
-            "'";
-    } else if (entry.kind == EntryKind::kFixed) {
+    if (entry.kind == EntryKind::kFixed) {
       why = "a fixed joint, published once as a static transform";
     } else {
       why = "a " + unsupported_types_[entry.index] +
@@ -237,6 +286,12 @@ class JointStateProcessor::Impl {
                                      return !driven_[s.driven].schedule.due(stamp, period_us_);
                                    }),
                     selected_.end());
+    given_alone_.erase(std::remove_if(given_alone_.begin(), given_alone_.end(),
+                                      [&](std::uint32_t given) {
+                                        return !given_mimics_[given].schedule.due(stamp,
+                                                                                  period_us_);
+                                      }),
+                       given_alone_.end());
   }
 
   // Writes the joint's transform as the batch's next one, unless a huge position (or a mimic's
@@ -259,6 +314,10 @@ class JointStateProcessor::Impl {
       driven.schedule.published(stamp, period_us_);
       count += 1 + driven.followers.size();
     }
+    for (const std::uint32_t given : given_alone_) {
+      given_mimics_[given].schedule.published(stamp, period_us_);
+      ++count;
+    }
     batch_.utime = toUtime(arrival);
     batch_.transforms.resize(count);
     std::size_t k = 0;
@@ -266,8 +325,15 @@ class JointStateProcessor::Impl {
       const Driven& driven = driven_[s.driven];
       append(k, outputs_[driven.output], s.position, stamp);
       for (const Follower& follower : driven.followers) {
-        append(k, outputs_[follower.output], mimicPosition(follower.relation, s.position), stamp);
+        const GivenMimic& given = given_mimics_[follower.given];
+        const double position = given.seen_in_message == message_serial_
+                                    ? given.position
+                                    : mimicPosition(follower.relation, s.position);
+        append(k, outputs_[follower.output], position, stamp);
       }
+    }
+    for (const std::uint32_t given : given_alone_) {
+      append(k, outputs_[given_mimics_[given].output], given_mimics_[given].position, stamp);
     }
     batch_.transforms.resize(k);
     batch_.num_transforms = static_cast<std::int32_t>(k);
@@ -276,7 +342,7 @@ class JointStateProcessor::Impl {
 
   std::string robot_name_;
   std::int64_t period_us_ = 0;
-  OnceReporter reporter_;
+  programs::OnceReporter reporter_;
   JointStateSenders senders_;
   std::vector<Output> outputs_;
   std::vector<Driven> driven_;
@@ -285,6 +351,9 @@ class JointStateProcessor::Impl {
   std::vector<std::string> cached_names_;
   std::vector<Entry> cached_entries_;
   std::vector<Selected> selected_;
+  std::vector<GivenMimic> given_mimics_;
+  std::vector<std::uint32_t> given_this_message_;
+  std::vector<std::uint32_t> given_alone_;  // given without their leader
   std::uint64_t message_serial_ = 0;
   joint_state_t decoded_;
   tf_message_t batch_;
@@ -303,6 +372,8 @@ tf_message_t* JointStateProcessor::process(const joint_state_t& state, TimePoint
   return impl_->process(state, arrival);
 }
 
+void JointStateProcessor::setRobot(const RobotModel& robot) { impl_->setRobot(robot); }
+
 const JointStateStatistics& JointStateProcessor::statistics() const { return impl_->statistics; }
 
 const JointStateOptions& JointStateProcessor::options() const { return impl_->options; }
@@ -317,7 +388,7 @@ std::string describe(const JointStateStatistics& s) {
       {s.unstamped, "unstamped"},
       {s.non_finite_positions, "non-finite positions skipped"},
       {s.unknown_joints, "unknown joint names"},
-      {s.ignored_joints, "positions of fixed, floating, planar or mimic joints ignored"},
+      {s.ignored_joints, "positions of fixed, floating or planar joints ignored"},
       {s.duplicate_joints, "repeated joints"},
       {s.lost, "lost on the way (numbers skipped)"},
       {s.reordered, "came out of order"},

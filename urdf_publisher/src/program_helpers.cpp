@@ -1,6 +1,6 @@
 #include "program_helpers.hpp"
 
-#include "format_number.hpp"
+#include "lcmtf/programs/number_text.hpp"
 #include "lcmtf_urdf/robot_description.hpp"
 
 namespace lcmtf::urdf {
@@ -27,13 +27,6 @@ std::optional<RobotModel> loadFromFile(const std::string& path, const ProgramOut
   }
 }
 
-std::unique_ptr<lcm::LCM> openLcm(const std::string& url, const ProgramOutput& output) {
-  auto lcm = std::make_unique<lcm::LCM>(url);
-  if (lcm->good()) return lcm;
-  output.complain("cannot open LCM at " + describeUrl(url));
-  return nullptr;
-}
-
 std::optional<RobotModel> waitForDescription(lcm::LCM& lcm, const std::string& channel,
                                              const std::string& request_channel,
                                              const std::string& authority,
@@ -55,13 +48,9 @@ std::optional<RobotModel> waitForDescription(lcm::LCM& lcm, const std::string& c
   }
   if (!robot && !stop) {
     output.complain("no valid robot description heard on " + channel + " within " +
-                    formatNumber(std::chrono::duration<double>(timeout).count()) + " s");
+                    programs::formatNumber(std::chrono::duration<double>(timeout).count()) + " s");
   }
   return robot;
-}
-
-std::string describeUrl(const std::string& url) {
-  return url.empty() ? "LCM's default URL" : "'" + url + "'";
 }
 
 }  // namespace lcmtf::urdf

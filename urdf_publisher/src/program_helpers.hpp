@@ -29,9 +29,6 @@ struct ProgramOutput {
 /// The robot in `path`; nothing when `path` is empty or (said on err) cannot be used.
 std::optional<RobotModel> loadFromFile(const std::string& path, const ProgramOutput& output);
 
-/// An LCM on `url`, or null (said on err).
-std::unique_ptr<lcm::LCM> openLcm(const std::string& url, const ProgramOutput& output);
-
 /// waitForRobotDescription, saying what it waits for; nothing when stopped first or, with a
 /// `timeout` above zero, when none came within it (also said on err).
 std::optional<RobotModel> waitForDescription(lcm::LCM& lcm, const std::string& channel,
@@ -40,8 +37,5 @@ std::optional<RobotModel> waitForDescription(lcm::LCM& lcm, const std::string& c
                                              const std::atomic<bool>& stop,
                                              const ProgramOutput& output,
                                              Duration timeout = Duration::zero());
-
-/// The URL as a user reads it: "" is LCM's default.
-std::string describeUrl(const std::string& url);
 
 }  // namespace lcmtf::urdf

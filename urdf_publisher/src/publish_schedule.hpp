@@ -1,7 +1,8 @@
 #pragma once
 
 #include <cstdint>
-#include <limits>
+
+#include "lcmtf/programs/saturating.hpp"
 
 namespace lcmtf::urdf {
 
@@ -26,10 +27,8 @@ class PublishSchedule {
 
  private:
   // Stamps come from the network and may be anything.
-  static std::int64_t plus(std::int64_t a, std::int64_t b) {
-    return a > std::numeric_limits<std::int64_t>::max() - b
-               ? std::numeric_limits<std::int64_t>::max()
-               : a + b;
+  static constexpr std::int64_t plus(std::int64_t a, std::int64_t b) {
+    return programs::saturatingAdd(a, b);
   }
 
   bool started_ = false;

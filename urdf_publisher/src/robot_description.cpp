@@ -1,8 +1,8 @@
 #include "lcmtf_urdf/robot_description.hpp"
 
+#include "lcmtf/programs/report_once.hpp"
 #include "lcmtf/resend_request_t.hpp"
 #include "lcmtf/wire_decode.hpp"
-#include "once_reporter.hpp"
 
 namespace lcmtf::urdf {
 
@@ -39,7 +39,7 @@ class DescriptionCatcher {
     reporter_.report(message, message);
   }
 
-  OnceReporter reporter_;
+  programs::OnceReporter reporter_;
 };
 
 }  // namespace

@@ -6,11 +6,13 @@
 #include <filesystem>
 #include <fstream>
 
-#include "format_number.hpp"
+#include "lcmtf/programs/number_text.hpp"
 #include "mimic_chains.hpp"
 #include "urdfdom_parse.hpp"
 
 namespace lcmtf::urdf {
+
+using programs::formatNumber;
 
 namespace {
 

@@ -1,8 +1,10 @@
 #include "lcmtf_urdf/robot_summary.hpp"
 
-#include "format_number.hpp"
+#include "lcmtf/programs/number_text.hpp"
 
 namespace lcmtf::urdf {
+
+using programs::formatNumber;
 
 namespace {
 

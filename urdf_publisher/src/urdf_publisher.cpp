@@ -25,7 +25,7 @@ UrdfPublisher::UrdfPublisher(lcm::LCM& lcm, RobotModel robot, UrdfPublisherOptio
       options_(std::move(options)),
       processor_(robot_, options_.joint_states),
       tf_numbering_(options_.tf_channel, options_.joint_states.authority),
-      statics_(lcm_, staticOptions(options_)) {
+      description_problems_(options_.joint_states.reporter) {
   joint_state_subscription_ =
       lcm_.subscribe(options_.joint_states_channel, &UrdfPublisher::onJointState, this);
   joint_state_subscription_->setQueueCapacity(options_.queue_capacity);
@@ -34,19 +34,60 @@ UrdfPublisher::UrdfPublisher(lcm::LCM& lcm, RobotModel robot, UrdfPublisherOptio
                                                        &UrdfPublisher::onDescriptionRequest, this);
     publishDescription();
   }
-  const std::vector<TransformStamped> fixed =
-      fixedJointTransforms(robot_, options_.joint_states.frame_prefix);
-  if (!fixed.empty() && !statics_.sendTransform(fixed)) ++publish_failures_;
+  if (options_.follow_description) {
+    description_subscription_ =
+        lcm_.subscribe(options_.description_channel, &UrdfPublisher::onDescription, this);
+  }
+  publishStatics();
 }
 
 UrdfPublisher::~UrdfPublisher() {
   lcm_.unsubscribe(joint_state_subscription_);
   if (description_request_subscription_) lcm_.unsubscribe(description_request_subscription_);
+  if (description_subscription_) lcm_.unsubscribe(description_subscription_);
+}
+
+// A broadcaster of its own for each robot, so the statics of a robot replaced are sent no more.
+void UrdfPublisher::publishStatics() {
+  statics_.reset();
+  statics_.emplace(lcm_, staticOptions(options_));
+  const std::vector<TransformStamped> fixed =
+      fixedJointTransforms(robot_, options_.joint_states.frame_prefix);
+  if (!fixed.empty() && !statics_->sendTransform(fixed)) ++publish_failures_;
 }
 
 void UrdfPublisher::poll() {
-  statics_.resendIfDue();
+  if (next_robot_) {
+    robot_ = std::move(*next_robot_);
+    next_robot_.reset();
+    processor_.setRobot(robot_);
+    publishStatics();
+    ++robots_replaced_;
+  }
+  statics_->resendIfDue();
   answerDescriptionIfDue();
+}
+
+void UrdfPublisher::onDescription(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  robot_description_t description;
+  const DecodeResult decoded = decodeMessage(buffer->data, buffer->data_size, description);
+  if (!decoded.ok) {
+    ++descriptions_refused_;
+    description_problems_.report(
+        "malformed", "refused a message on " + channel + ": " + decoded.error + " (reported once)");
+    return;
+  }
+  const std::string& current = next_robot_ ? next_robot_->urdf : robot_.urdf;
+  if (description.urdf == current || description.urdf == refused_urdf_) return;
+  try {
+    next_robot_ = parseRobotModel(description.urdf, channel + " from " + description.authority);
+  } catch (const UrdfError& e) {
+    ++descriptions_refused_;
+    refused_urdf_ = description.urdf;
+    description_problems_.report(e.what(), std::string("kept the robot, refused a new robot "
+                                                       "description: ") +
+                                               e.what());
+  }
 }
 
 void UrdfPublisher::onJointState(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "lcmtf/exceptions.hpp"
+#include "lcmtf/frame_name.hpp"
 #include "lcmtf/geometry_types.hpp"
 #include "lcmtf/stamped.hpp"
 #include "lcmtf/transform_stamped.hpp"
@@ -45,10 +46,7 @@ PoseWithCovariance transformed(const Transform& target_T_source, const PoseWithC
 /// InvalidArgumentException when the data is not in the transform's child frame.
 template <class T>
 void doTransform(const Stamped<T>& in, Stamped<T>& out, const TransformStamped& transform) {
-  const auto bare = [](const std::string& frame) {
-    return frame.empty() || frame.front() != '/' ? frame : frame.substr(1);
-  };
-  if (bare(in.frame_id) != bare(transform.child_frame)) {
+  if (canonicalFrameName(in.frame_id) != canonicalFrameName(transform.child_frame)) {
     throw InvalidArgumentException("doTransform: data in frame '" + in.frame_id +
                                    "' given a transform from frame '" + transform.child_frame +
                                    "' (into '" + transform.parent_frame + "')");

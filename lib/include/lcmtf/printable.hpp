@@ -10,5 +10,8 @@ namespace lcmtf {
 std::string printable(std::string_view text);
 /// The same, line by line: the newlines of a report are kept.
 std::string printableLines(std::string_view text);
+/// `text` as a quoted Graphviz DOT string shown as it is: a newline becomes a line break, and
+/// control characters and malformed UTF-8 (Graphviz's renderers fail on it) become '?'.
+std::string dotQuoted(std::string_view text);
 
 }  // namespace lcmtf

@@ -22,6 +22,9 @@ struct JointPublisherConfig {
   double rate = 50.0;                          ///< joint states per second
   double duration = 0.0;                       ///< seconds to run; 0 runs until stopped
   JointStateGeneratorOptions generator;
+  /// Channels of joint states whose positions take the place of the generated ones (as
+  /// joint_state_publisher's source_list).
+  std::vector<std::string> sources;
 };
 
 /// lcmtf-joint-publisher's command line (without the program name).

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,17 +19,24 @@ struct JointStateGeneratorOptions {
 };
 
 /// Joint states for every movable joint of a robot that follows no other: at rest, or
-/// sweeping smoothly within the limits (continuous joints turn round and round).
+/// sweeping smoothly within the limits (continuous joints turn round and round); and, after
+/// them, every mimic joint at the position its leader gives it.
 class JointStateGenerator {
  public:
   /// Throws std::invalid_argument for a held joint that is unknown, a mimic joint, or held
   /// outside its limits or at a non-finite position.
   JointStateGenerator(const RobotModel& robot, JointStateGeneratorOptions options = {});
 
-  /// The joints in the order of every state's arrays.
+  /// The joints in the order of every state's arrays: those that follow no other, then the
+  /// mimic joints.
   const std::vector<std::string>& jointNames() const { return names_; }
-  /// Positions and velocities `elapsed_seconds` after the start, stamped `stamp`.
-  joint_state_t stateAt(double elapsed_seconds, TimePoint stamp) const;
+  /// How many of them are mimic joints.
+  std::size_t mimicCount() const { return mimics_.size(); }
+  /// Positions and velocities `elapsed_seconds` after the start, stamped `stamp`. A position
+  /// in `given` (indexed as jointNames()) takes the place of the generated one; mimic joints
+  /// then follow their leader's position, given or not, unless given themselves.
+  joint_state_t stateAt(double elapsed_seconds, TimePoint stamp,
+                        const std::vector<std::optional<double>>& given = {}) const;
 
   /// Zero, or the middle of the limits when zero lies outside them.
   static double restPosition(const MovableJoint& joint);
@@ -44,8 +52,14 @@ class JointStateGenerator {
     double upper = 0.0;
   };
 
+  struct Follower {
+    std::size_t leader = 0;  ///< index into motions_
+    Mimic relation;
+  };
+
   std::vector<std::string> names_;
   std::vector<Motion> motions_;
+  std::vector<Follower> mimics_;
 };
 
 }  // namespace lcmtf::urdf

@@ -38,7 +38,9 @@ struct JointStateStatistics {
   std::uint64_t rate_limited = 0;          ///< skipped: within the publish-frequency cap
   std::uint64_t non_finite_positions = 0;  ///< skipped: a NaN or infinite position or pose
   std::uint64_t unknown_joints = 0;        ///< entries naming no joint of the robot
-  std::uint64_t ignored_joints = 0;    ///< entries naming a fixed, floating, planar or mimic joint
+  std::uint64_t ignored_joints = 0;        ///< entries naming a fixed, floating or planar joint
+  /// Mimic joints' positions a joint state gave, published instead of the leader's relation.
+  std::uint64_t given_mimic_positions = 0;
   std::uint64_t duplicate_joints = 0;  ///< entries repeating a joint of the same message
   std::uint64_t lost = 0;       ///< numbered joint states (joint_state_t::sequence) that never came
   std::uint64_t reordered = 0;  ///< numbered joint states that came after a higher number
@@ -49,7 +51,9 @@ struct JointStateStatistics {
 std::string describe(const JointStateStatistics& statistics);
 
 /// Each joint state as one batch of parent_T_child: its movable joints and their mimic joints.
-/// Bad entries are skipped, bad messages refused, each counted and first reported. One thread.
+/// A mimic joint whose position the joint state gives takes that position (as in
+/// robot_state_publisher 2), else multiplier * leader + offset. Bad entries are skipped, bad
+/// messages refused, each counted and first reported. One thread.
 class JointStateProcessor {
  public:
   explicit JointStateProcessor(const RobotModel& robot, JointStateOptions options = {});
@@ -62,6 +66,8 @@ class JointStateProcessor {
   tf_message_t* process(const void* data, std::size_t size, TimePoint arrival = now());
   tf_message_t* process(const joint_state_t& state, TimePoint arrival = now());
 
+  /// Publishes the joints of `robot` from now on (a new description); the counts go on.
+  void setRobot(const RobotModel& robot);
   /// What has been handled and refused so far.
   const JointStateStatistics& statistics() const;
   /// The options it was made with.

@@ -4,12 +4,14 @@
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <lcm/lcm-cpp.hpp>
 
 #include "lcmtf/batch_numbering.hpp"
 #include "lcmtf/channels.hpp"
+#include "lcmtf/programs/report_once.hpp"
 #include "lcmtf/static_transform_broadcaster.hpp"
 #include "lcmtf_urdf/joint_state_processor.hpp"
 #include "lcmtf_urdf/robot_model.hpp"
@@ -26,6 +28,9 @@ struct UrdfPublisherOptions {
   std::string description_channel = kRobotDescriptionChannel;
   std::string description_request_channel = kRobotDescriptionRequestChannel;
   bool publish_description = true;  ///< off when the description came from the network
+  /// A new robot_description_t on description_channel replaces the robot, as
+  /// robot_state_publisher takes a changed robot_description (when it came from the network).
+  bool follow_description = false;
   Duration static_resend_period = std::chrono::seconds(1);
   int queue_capacity = 1000;  ///< joint states LCM holds while the publisher is busy
 };
@@ -40,8 +45,8 @@ class UrdfPublisher {
   UrdfPublisher(const UrdfPublisher&) = delete;
   UrdfPublisher& operator=(const UrdfPublisher&) = delete;
 
-  /// Resends the static transforms when their period is up, and answers description requests
-  /// held back by the answer rate; call between handle() calls.
+  /// Resends the static transforms when their period is up, answers description requests held
+  /// back by the answer rate, and takes a new description heard; call between handle() calls.
   void poll();
 
   /// The robot it publishes.
@@ -54,22 +59,33 @@ class UrdfPublisher {
   std::uint64_t descriptionRequestsAnswered() const { return description_requests_answered_; }
   /// Answers sent to them: at most one per kDescriptionAnswerInterval.
   std::uint64_t descriptionAnswersSent() const { return description_answers_sent_; }
+  /// Robots taken from new descriptions (follow_description), and descriptions refused.
+  std::uint64_t robotsReplaced() const { return robots_replaced_; }
+  std::uint64_t descriptionsRefused() const { return descriptions_refused_; }
   static constexpr std::chrono::milliseconds kDescriptionAnswerInterval{100};
 
  private:
   void onJointState(const lcm::ReceiveBuffer* buffer, const std::string& channel);
   void onDescriptionRequest(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+  void onDescription(const lcm::ReceiveBuffer* buffer, const std::string& channel);
   void publishDescription();
   void answerDescriptionIfDue();
+  void publishStatics();
 
   lcm::LCM& lcm_;
   RobotModel robot_;
   UrdfPublisherOptions options_;
   JointStateProcessor processor_;
   BatchNumbering tf_numbering_;
-  StaticTransformBroadcaster statics_;
+  std::optional<StaticTransformBroadcaster> statics_;  // made again for a new robot
   lcm::Subscription* joint_state_subscription_ = nullptr;
   lcm::Subscription* description_request_subscription_ = nullptr;
+  lcm::Subscription* description_subscription_ = nullptr;
+  std::optional<RobotModel> next_robot_;  // taken in poll(), outside LCM's dispatch
+  std::string refused_urdf_;              // the last text refused, not parsed again
+  std::uint64_t robots_replaced_ = 0;
+  std::uint64_t descriptions_refused_ = 0;
+  programs::OnceReporter description_problems_;
   std::uint64_t publish_failures_ = 0;
   std::uint64_t description_requests_answered_ = 0;
   std::uint64_t description_answers_sent_ = 0;

@@ -9,8 +9,8 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "lcmtf/buffer_core.hpp"
-#include "lcmtf/nodes/command_line.hpp"
 #include "lcmtf/nodes/tf_connection.hpp"
+#include "lcmtf/programs/command_line.hpp"
 #include "lcmtf/time.hpp"
 
 namespace lcmtf::nodes {
@@ -28,6 +28,9 @@ struct EchoTime {
 /// `text` as --time reads it: seconds since the Unix epoch, 0 for the latest data, or a
 /// negative number of seconds before now. CommandLineError otherwise.
 EchoTime parseEchoTime(const std::string& text);
+
+/// How long --once waits for a pose unless --timeout says otherwise.
+inline constexpr Duration kOnceTimeout = std::chrono::seconds(5);
 
 /// What lcmtf-echo prints, how often and for how long.
 struct EchoOptions {

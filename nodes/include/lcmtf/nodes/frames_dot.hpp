@@ -10,8 +10,4 @@ namespace lcmtf::nodes {
 /// rate, newest stamp and age, buffer span; static edges dashed, conflicted frames red.
 std::string framesToDot(const TrafficSummary& summary, const std::string& caption);
 
-/// `text` as a quoted DOT string that Graphviz shows as it is; control characters and
-/// malformed UTF-8 become '?'.
-std::string dotQuoted(const std::string& text);
-
 }  // namespace lcmtf::nodes

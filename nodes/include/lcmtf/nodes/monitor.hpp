@@ -8,8 +8,8 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include "lcmtf/nodes/command_line.hpp"
 #include "lcmtf/nodes/tf_connection.hpp"
+#include "lcmtf/programs/command_line.hpp"
 #include "lcmtf/time.hpp"
 
 namespace lcmtf::nodes {
@@ -30,7 +30,7 @@ std::optional<int> parseMonitorCommandLine(const std::vector<std::string>& args,
                                            std::ostream& err);
 
 /// Listens on `lcm` and prints the report after each window; returns the exit status (1 when
-/// a single window heard nothing).
+/// a single window heard nothing, or no chain between the two frames asked about).
 int runMonitor(const MonitorOptions& options, lcm::LCM& lcm, std::ostream& out, std::ostream& err,
                const std::atomic<bool>& stop);
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "lcmtf/nodes/command_line.hpp"
 #include "lcmtf/nodes/tf_connection.hpp"
+#include "lcmtf/programs/command_line.hpp"
 #include "lcmtf/time.hpp"
 #include "lcmtf/transform_stamped.hpp"
 

@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "lcmtf/nodes/roll_pitch_yaw.hpp"
+#include "lcmtf/nodes/program_support.hpp"
 #include "lcmtf/time.hpp"
 #include "lcmtf/transform_stamped.hpp"
 

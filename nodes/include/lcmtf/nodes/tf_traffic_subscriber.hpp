@@ -6,9 +6,9 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include "lcmtf/nodes/command_line.hpp"
 #include "lcmtf/nodes/tf_connection.hpp"
 #include "lcmtf/nodes/tf_traffic.hpp"
+#include "lcmtf/programs/command_line.hpp"
 #include "lcmtf/wire_decode.hpp"
 
 namespace lcmtf::nodes {

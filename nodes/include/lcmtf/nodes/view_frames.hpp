@@ -8,8 +8,8 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include "lcmtf/nodes/command_line.hpp"
 #include "lcmtf/nodes/tf_connection.hpp"
+#include "lcmtf/programs/command_line.hpp"
 #include "lcmtf/time.hpp"
 
 namespace lcmtf::nodes {

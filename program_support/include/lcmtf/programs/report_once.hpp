@@ -7,7 +7,7 @@
 
 #include "lcmtf/printable.hpp"
 
-namespace lcmtf::urdf {
+namespace lcmtf::programs {
 
 /// Passes a problem to the sink the first time its key comes up and stays quiet after that,
 /// remembering at most `max_keys` keys, so a flood of distinct bad names cannot grow memory.
@@ -37,4 +37,4 @@ class OnceReporter {
   bool full_reported_ = false;
 };
 
-}  // namespace lcmtf::urdf
+}  // namespace lcmtf::programs

@@ -1,8 +1,8 @@
-#include "lcmtf/nodes/roll_pitch_yaw.hpp"
+#include "lcmtf/programs/roll_pitch_yaw.hpp"
 
 #include <cmath>
 
-namespace lcmtf::nodes {
+namespace lcmtf::programs {
 
 namespace {
 
@@ -34,4 +34,4 @@ RollPitchYaw toRollPitchYaw(const Eigen::Quaterniond& rotation) {
   return angles;
 }
 
-}  // namespace lcmtf::nodes
+}  // namespace lcmtf::programs

@@ -1,6 +1,4 @@
-#include "lcmtf/nodes/command_line.hpp"
-
-#include <unistd.h>
+#include "lcmtf/programs/command_line.hpp"
 
 #include <algorithm>
 #include <array>
@@ -11,7 +9,7 @@
 #include <cstdlib>
 #include <ostream>
 
-namespace lcmtf::nodes {
+namespace lcmtf::programs {
 
 namespace {
 
@@ -90,14 +88,6 @@ CLI::Validator nonEmptyName() {
       [](std::string& text) { return text.empty() ? std::string("must not be empty") : ""; }, "");
 }
 
-std::string toolAuthority(const std::string& program) {
-  std::array<char, 256> host{};
-  if (gethostname(host.data(), host.size() - 1) != 0 || host[0] == '\0') {
-    return program + "@localhost:" + std::to_string(getpid());
-  }
-  return program + "@" + host.data() + ":" + std::to_string(getpid());
-}
-
 CLI::Validator positiveFiniteNumber() {
   return CLI::Validator(
       [](std::string& text) {
@@ -122,4 +112,30 @@ CLI::Validator positiveFiniteNumberUpTo(double most) {
       "in " + range);
 }
 
-}  // namespace lcmtf::nodes
+CLI::Option* addChannelOption(CLI::App& app, const std::string& name, std::string& channel,
+                              const std::string& help) {
+  return app.add_option(name, channel, help)
+      ->capture_default_str()
+      ->check(nonEmptyName())
+      ->type_name("NAME");
+}
+
+void addOldName(CLI::App& app, const std::string& name, std::string& value) {
+  app.add_option(name, value)->check(nonEmptyName())->group("");
+}
+
+CLI::Validator finiteNumberIn(double lower, double upper) {
+  char shown[64];
+  std::snprintf(shown, sizeof shown, "[%g, %g]", lower, upper);
+  const std::string range = shown;
+  return CLI::Validator(
+      [lower, upper, range](std::string& text) {
+        const std::optional<double> value = strictNumber(text);
+        return value && *value >= lower && *value <= upper
+                   ? std::string()
+                   : "'" + text + "' is not a number in " + range;
+      },
+      "in " + range);
+}
+
+}  // namespace lcmtf::programs

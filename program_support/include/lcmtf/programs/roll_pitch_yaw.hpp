@@ -2,7 +2,7 @@
 
 #include <Eigen/Geometry>
 
-namespace lcmtf::nodes {
+namespace lcmtf::programs {
 
 /// Angles in radians of the rotation Rz(yaw) * Ry(pitch) * Rx(roll): roll about x first, then
 /// pitch about the fixed y, then yaw about the fixed z (the ROS and URDF convention).
@@ -19,4 +19,4 @@ Eigen::Quaterniond toQuaternion(const RollPitchYaw& angles);
 /// +-pi/2 (gimbal lock) yaw is 0 and roll carries the whole remaining turn.
 RollPitchYaw toRollPitchYaw(const Eigen::Quaterniond& rotation);
 
-}  // namespace lcmtf::nodes
+}  // namespace lcmtf::programs

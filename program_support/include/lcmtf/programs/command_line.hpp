@@ -9,7 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
-namespace lcmtf::nodes {
+namespace lcmtf::programs {
 
 /// Exit statuses shared by every tool.
 inline constexpr int kExitSuccess = 0;
@@ -22,7 +22,7 @@ class CommandLineError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// The lcmtf version the tools were built from ("0.1.0").
+/// The lcmtf version the programs were built from ("0.1.0").
 const char* toolsVersion();
 
 /// A CLI11 app for `program` with --help, --version and a footer that explains exit statuses.
@@ -37,9 +37,6 @@ std::optional<int> parseCommandLine(CLI::App& app, const std::vector<std::string
 /// Reports a CommandLineError found after parsing, like parseCommandLine does; returns 2.
 int reportBadArguments(const CLI::App& app, const std::string& message, std::ostream& err);
 
-/// The name a tool signs its messages with: "program@host:pid".
-std::string toolAuthority(const std::string& program);
-
 /// `text` as a finite number, all of it; nothing otherwise.
 std::optional<double> strictNumber(const std::string& text);
 
@@ -51,7 +48,15 @@ CLI::Validator finiteNumber();
 CLI::Validator positiveFiniteNumber();
 /// Above zero and at most `most`; the help shows the range as (0, most].
 CLI::Validator positiveFiniteNumberUpTo(double most);
+/// A finite number in [lower, upper]; the help shows the range.
+CLI::Validator finiteNumberIn(double lower, double upper);
 /// A validator refusing the empty string (channel and frame names).
 CLI::Validator nonEmptyName();
 
-}  // namespace lcmtf::nodes
+/// An option naming an LCM channel: not empty, its default shown in the help.
+CLI::Option* addChannelOption(CLI::App& app, const std::string& name, std::string& channel,
+                              const std::string& help);
+/// An option under a name the programs once used: it still works, and --help leaves it out.
+void addOldName(CLI::App& app, const std::string& name, std::string& value);
+
+}  // namespace lcmtf::programs

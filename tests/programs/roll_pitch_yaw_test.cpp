@@ -1,10 +1,10 @@
-#include "lcmtf/nodes/roll_pitch_yaw.hpp"
+#include "lcmtf/programs/roll_pitch_yaw.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace lcmtf::nodes {
+namespace lcmtf::programs {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -76,4 +76,4 @@ TEST(RollPitchYaw, NonUnitQuaternionIsReadAsItsRotation) {
 }
 
 }  // namespace
-}  // namespace lcmtf::nodes
+}  // namespace lcmtf::programs

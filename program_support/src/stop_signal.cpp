@@ -1,11 +1,11 @@
-#include "lcmtf/nodes/stop_signal.hpp"
+#include "lcmtf/programs/stop_signal.hpp"
 
 #include <signal.h>
 
 #include <algorithm>
 #include <thread>
 
-namespace lcmtf::nodes {
+namespace lcmtf::programs {
 
 namespace {
 
@@ -36,4 +36,4 @@ bool sleepUnlessStopped(std::chrono::milliseconds duration, const std::atomic<bo
   return true;
 }
 
-}  // namespace lcmtf::nodes
+}  // namespace lcmtf::programs

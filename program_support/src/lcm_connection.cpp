@@ -1,0 +1,48 @@
+#include "lcmtf/programs/lcm_connection.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstdlib>
+#include <ostream>
+
+#include "lcmtf/programs/command_line.hpp"
+
+namespace lcmtf::programs {
+
+const char* lcmBuiltInDefaultUrl() { return "udpm://239.255.76.67:7667?ttl=0"; }
+
+std::string describeLcmUrl(const std::string& lcm_url) {
+  if (!lcm_url.empty()) return lcm_url;
+  const char* from_environment = std::getenv("LCM_DEFAULT_URL");
+  if (from_environment && *from_environment) return from_environment;
+  return lcmBuiltInDefaultUrl();
+}
+
+std::unique_ptr<lcm::LCM> openLcm(const std::string& lcm_url) {
+  auto lcm = std::make_unique<lcm::LCM>(lcm_url);
+  if (!lcm->good()) {
+    throw CommandLineError("--lcm-url: cannot open LCM at '" + describeLcmUrl(lcm_url) + "'");
+  }
+  return lcm;
+}
+
+std::unique_ptr<lcm::LCM> openLcmOrReport(const std::string& lcm_url, const std::string& program,
+                                          std::ostream& err) {
+  try {
+    return openLcm(lcm_url);
+  } catch (const CommandLineError& e) {
+    err << program << ": " << e.what() << std::endl;
+    return nullptr;
+  }
+}
+
+bool handleLcmFor(lcm::LCM& lcm, std::chrono::milliseconds timeout, bool* handled) {
+  const int milliseconds = static_cast<int>(std::clamp<std::int64_t>(timeout.count(), 0, 1000));
+  errno = 0;
+  const int result = lcm.handleTimeout(milliseconds);
+  if (handled) *handled = result > 0;
+  return result >= 0 || errno == EINTR;
+}
+
+}  // namespace lcmtf::programs

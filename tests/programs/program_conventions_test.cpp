@@ -1,0 +1,102 @@
+// Every program follows one command-line convention: --help and --version exit 0, a bad
+// argument or --lcm-url exits 2 naming it, and a program that talks says on which URL.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "support/child_process.hpp"
+#include "support/test_lcm.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+using lcmtf_test::ChildProcess;
+using testing::HasSubstr;
+
+struct Program {
+  std::string path;
+  std::vector<std::string> needed;  ///< arguments without which it would not run
+  bool publishes_transforms = true;
+  bool runs_until_stopped = false;
+};
+
+void PrintTo(const Program& program, std::ostream* out) {
+  *out << program.path.substr(program.path.rfind('/') + 1);
+}
+
+std::string nameOf(const Program& program) {
+  return program.path.substr(program.path.rfind('/') + 1);
+}
+
+std::vector<std::string> with(std::vector<std::string> arguments,
+                              const std::vector<std::string>& needed) {
+  arguments.insert(arguments.end(), needed.begin(), needed.end());
+  return arguments;
+}
+
+class EveryProgram : public testing::TestWithParam<Program> {};
+
+TEST_P(EveryProgram, HelpTeachesTheSharedOptionsAndExitsZero) {
+  ChildProcess program(GetParam().path, {"--help"});
+  ASSERT_EQ(program.waitForExit(10s), std::optional<int>(0)) << program.stderrText();
+  std::vector<std::string> taught{"Usage:", "--lcm-url", "--version",
+                                  "Examples:", "Exit status: 0 on success, 1 when"};
+  if (GetParam().publishes_transforms) taught.push_back("--static-channel");
+  for (const std::string& option : taught) {
+    EXPECT_THAT(program.stdoutText(), HasSubstr(option));
+  }
+}
+
+TEST_P(EveryProgram, VersionNamesTheProgramAndExitsZero) {
+  ChildProcess program(GetParam().path, {"--version"});
+  ASSERT_EQ(program.waitForExit(10s), std::optional<int>(0)) << program.stderrText();
+  EXPECT_THAT(
+      program.stdoutText(),
+      testing::MatchesRegex(nameOf(GetParam()) + " \\(lcmtf\\) [0-9]+\\.[0-9]+\\.[0-9]+\n"));
+}
+
+TEST_P(EveryProgram, AnUnknownOptionExitsTwoNamingIt) {
+  ChildProcess program(GetParam().path, with({"--frobnicate"}, GetParam().needed));
+  ASSERT_EQ(program.waitForExit(10s), std::optional<int>(2)) << program.stderrText();
+  EXPECT_THAT(program.stderrText(), HasSubstr(nameOf(GetParam()) + ": "));
+  EXPECT_THAT(program.stderrText(), HasSubstr("--frobnicate"));
+  EXPECT_THAT(program.stderrText(), HasSubstr("Run '" + nameOf(GetParam()) + " --help'"));
+}
+
+TEST_P(EveryProgram, AnLcmUrlThatCannotBeOpenedExitsTwoNamingIt) {
+  ChildProcess program(GetParam().path, with({"--lcm-url", "bogus://"}, GetParam().needed));
+  ASSERT_EQ(program.waitForExit(10s), std::optional<int>(2)) << program.stderrText();
+  EXPECT_THAT(program.stderrText(),
+              HasSubstr(nameOf(GetParam()) + ": --lcm-url: cannot open LCM at 'bogus://'"));
+}
+
+TEST_P(EveryProgram, ARunningProgramSaysTheUrlItTalksOn) {
+  if (!GetParam().runs_until_stopped) GTEST_SKIP() << "says its URL only in its messages";
+  const auto* test = testing::UnitTest::GetInstance()->current_test_info();
+  const std::string url = lcmtf_test::privateUdpmUrl(test->name());
+  setenv("LCM_DEFAULT_URL", url.c_str(), 1);  // no --lcm-url: the URL of the environment
+  ChildProcess program(GetParam().path, GetParam().needed);
+  EXPECT_TRUE(program.waitForStdout(url, 10s)) << program.stdoutText() << program.stderrText();
+  program.interrupt();
+  EXPECT_EQ(program.waitForExit(10s), std::optional<int>(0)) << program.stderrText();
+}
+
+const std::vector<std::string> kPose{"0", "0", "0", "0", "0", "0", "base", "camera"};
+
+INSTANTIATE_TEST_SUITE_P(
+    Programs, EveryProgram,
+    testing::Values(Program{LCMTF_STATIC_PUBLISHER_PATH, kPose, true, true},
+                    Program{LCMTF_ECHO_PATH, {"map", "base"}}, Program{LCMTF_MONITOR_PATH, {}},
+                    Program{LCMTF_VIEW_FRAMES_PATH, {}},
+                    Program{LCMTF_URDF_PUBLISHER_PATH, {EXAMPLE_URDF}, true, true},
+                    Program{LCMTF_JOINT_PUBLISHER_PATH, {EXAMPLE_URDF}, false, true}),
+    [](const testing::TestParamInfo<Program>& param) {
+      std::string name = nameOf(param.param).substr(6);  // without "lcmtf-"
+      for (char& c : name) c = c == '-' ? '_' : c;
+      return name;
+    });
+
+}  // namespace
