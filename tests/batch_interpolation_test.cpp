@@ -1,8 +1,11 @@
 #include "batch_interpolation.hpp"
 
+#include "slerp_weights.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -34,12 +37,17 @@ Batch makeBatch(std::size_t count) {
   return batch;
 }
 
-void expectBatchMatchesOneByOne(std::size_t count) {
+// With `arcs_known`, each task carries the arc as a time cache works it out on insert; else
+// the batch works out every arc itself.
+void expectBatchMatchesOneByOne(std::size_t count, bool arcs_known = false) {
   const Batch batch = makeBatch(count);
   std::vector<Transform> out(count);
   std::vector<InterpolationTask> tasks;
   for (std::size_t i = 0; i < count; ++i) {
-    tasks.push_back({&batch.older[i], &batch.newer[i], batch.ratios[i], &out[i]});
+    const double arc = arcs_known
+                           ? signedArcSquared(batch.older[i].rotation, batch.newer[i].rotation)
+                           : std::numeric_limits<double>::quiet_NaN();
+    tasks.push_back({&batch.older[i], &batch.newer[i], batch.ratios[i], &out[i], arc});
   }
   interpolateBatch(tasks.data(), tasks.size());
   for (std::size_t i = 0; i < count; ++i) {
@@ -59,7 +67,23 @@ TEST(InterpolateBatch, BatchesLargerThanOneRoundOfLanesMatchToo) {
 TEST(InterpolateBatch, EveryBatchSizeUpToTwoRoundsOfLanesMatches) {
   for (std::size_t count = 1; count <= 9; ++count) {
     expectBatchMatchesOneByOne(count);
+    expectBatchMatchesOneByOne(count, true);
   }
+}
+
+TEST(InterpolateBatch, ArcsWorkedOutBeforehandGiveTheSameResults) {
+  expectBatchMatchesOneByOne(101, true);
+}
+
+TEST(InterpolateBatch, ArcKnownBeforehandIsNegativeWhenTheNewerRotationMustBeNegated) {
+  const Eigen::Quaterniond a(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
+  const Eigen::Quaterniond b(Eigen::AngleAxisd(0.31, Eigen::Vector3d::UnitZ()));
+  const Eigen::Quaterniond negated_b(-b.coeffs());
+  // The arc between the quaternions on the sphere is half the angle between the rotations.
+  EXPECT_NEAR(signedArcSquared(a, b), 0.005 * 0.005, 1e-15);
+  EXPECT_NEAR(signedArcSquared(a, negated_b), -0.005 * 0.005, 1e-15);
+  EXPECT_TRUE(std::isnan(
+      signedArcSquared(a, Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitX())))));
 }
 
 TEST(InterpolateBatch, EmptyBatchDoesNothing) { interpolateBatch(nullptr, 0); }

@@ -42,7 +42,9 @@ EdgeSample sampleAt(std::int64_t stamp, FrameId parent = kParent, int version = 
 
 ::testing::AssertionResult sameSpan(const SampleSpan& actual, const SampleSpan& expected) {
   if (actual.older == expected.older && actual.newer == expected.newer &&
-      actual.ratio == expected.ratio && actual.parent == expected.parent) {
+      actual.ratio == expected.ratio && actual.parent == expected.parent &&
+      (actual.newer == nullptr || actual.arc_squared == expected.arc_squared ||
+       (std::isnan(actual.arc_squared) && std::isnan(expected.arc_squared)))) {
     return ::testing::AssertionSuccess();
   }
   return ::testing::AssertionFailure()

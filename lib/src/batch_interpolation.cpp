@@ -30,7 +30,8 @@ constexpr std::size_t kLanes = 4;
   std::memcpy(values, &four, sizeof four);
 }
 
-// The slerp weights of a task whose arc is too long for the short series.
+// The slerp weights of a task whose arc was not worked out beforehand, or is too long for the
+// short series.
 void weightsOfAnyArc(const InterpolationTask& task, double& weight_a, double& weight_b) {
   const Eigen::Vector4d& a = task.older->rotation.coeffs();
   const Eigen::Vector4d& b = task.newer->rotation.coeffs();
@@ -63,31 +64,26 @@ void weightsOfAnyArc(const InterpolationTask& task, double& weight_a, double& we
 
 // Up to four tasks at once (`live` of them, the lanes after them idle): the weights of all four
 // from the short series side by side, a negative weight for each newer rotation on the far
-// side of the sphere from its older one. y = |a - b|^2 / 4 for each pair is worked out lane by
-// lane, its series for the squared arc side by side.
+// side of the sphere from its older one.
 [[gnu::always_inline]] inline void interpolateFour(const InterpolationTask* tasks,
                                                    std::size_t live) {
   Four ratio = {0.5, 0.5, 0.5, 0.5};
-  Four y = {0.0, 0.0, 0.0, 0.0};
-  FourBits far_side = {0, 0, 0, 0};
+  Four known = {0.0, 0.0, 0.0, 0.0};
   for (std::size_t lane = 0; lane < kLanes; ++lane) {
     if (lane < live) {
-      const Eigen::Vector4d& a = tasks[lane].older->rotation.coeffs();
-      const Eigen::Vector4d& b = tasks[lane].newer->rotation.coeffs();
-      const bool far = a.dot(b) < 0.0;
       ratio[lane] = tasks[lane].ratio;
-      y[lane] = 0.25 * (far ? Eigen::Vector4d(a + b) : Eigen::Vector4d(a - b)).squaredNorm();
-      far_side[lane] = far ? -1 : 0;
+      known[lane] = tasks[lane].arc_squared;
     }
   }
-  const Four arc_squared = 4.0 * y * horner<5>(kAsinSquared, y);
+  const FourBits far_side = reinterpret_cast<FourBits>(known) < 0;
+  const Four arc_squared = far_side ? -known : known;
   const Four inverse_sinc = shortInverseSinc(arc_squared);
   const Four weight_a = shortSeriesWeight(1.0 - ratio, arc_squared, inverse_sinc);
   const Four near_weight_b = shortSeriesWeight(ratio, arc_squared, inverse_sinc);
   const Four weight_b = far_side ? -near_weight_b : near_weight_b;
   for (std::size_t lane = 0; lane < live; ++lane) {
     const InterpolationTask& task = tasks[lane];
-    if (!(y[lane] <= kShortSeriesLimit)) {
+    if (std::isnan(task.arc_squared)) {
       double any_a;
       double any_b;
       weightsOfAnyArc(task, any_a, any_b);

@@ -83,7 +83,7 @@ class PathSampler {
         *out = composed(*step.anchor, *span.older);
         continue;
       }
-      storage_.tasks[tasks_++] = {span.older, span.newer, span.ratio, out};
+      storage_.tasks[tasks_++] = {span.older, span.newer, span.ratio, out, span.arc_squared};
       if (step.anchor) storage_.anchorings[anchorings_++] = {step.anchor, out};
     }
   }

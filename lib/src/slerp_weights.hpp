@@ -78,6 +78,18 @@ template <class Value>
   return w * (horner<5>(kSinc, w * w * arc_squared) * inverse_sinc);
 }
 
+/// What interpolation from rotation `a` to `b` needs to know of the arc between them on the
+/// sphere (half the angle between the rotations), worked out once per pair of samples: its
+/// square, negative when `b` must be negated to lie on `a`'s side of the sphere, or NaN when
+/// the arc is too long for the short series.
+inline double signedArcSquared(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
+  const double dot = a.coeffs().dot(b.coeffs());
+  const Eigen::Vector4d far_side = dot < 0.0 ? Eigen::Vector4d(-b.coeffs()) : b.coeffs();
+  const double y = 0.25 * (a.coeffs() - far_side).squaredNorm();
+  if (!(y <= kShortSeriesLimit)) return std::numeric_limits<double>::quiet_NaN();
+  return std::copysign(shortArcSquared(y), dot);
+}
+
 /// Turns weight_a = 1 - ratio and weight_b = ratio into the slerp weights, for any y.
 inline void slerpWeights(double y, double& weight_a, double& weight_b) {
   if (y <= kShortSeriesLimit) {

@@ -6,6 +6,7 @@ namespace lcmtf::detail {
 
 void TimeCache::setStatic(FrameId parent, const Transform& transform) {
   samples_.clear();
+  arcs_.clear();
   parents_.clear();
   static_value_ = EdgeValue{parent, transform};
   head_ = 0;
@@ -72,7 +73,13 @@ void TimeCache::move(std::size_t from, std::size_t to) {
   const std::size_t source = slot(from);
   const std::size_t destination = slot(to);
   samples_.copy(samples_, source, destination);
+  arcs_[destination] = arcs_[source];
   if (parents_.size() != 0) parents_[destination] = parents_[source];
+}
+
+void TimeCache::refreshArc(std::size_t index) {
+  if (index + 1 >= count_) return;
+  arcs_[slot(index)] = signedArcSquared(transformAt(index).rotation, transformAt(index + 1).rotation);
 }
 
 void TimeCache::noteParentChanges(std::size_t index) {
@@ -102,12 +109,15 @@ void TimeCache::grow(std::int64_t cache_time, std::size_t most_samples) {
   }
   wanted = std::max(std::min(wanted, std::max(most_samples, kSmallest)), count_ + 1);
   SampleRing samples(wanted);
+  UnfilledArray<double> arcs(wanted);
   UnfilledArray<FrameId> parents(parents_.size() != 0 ? wanted : 0);
   for (std::size_t i = 0; i < count_; ++i) {
     samples.copy(samples_, slot(i), i);
+    arcs[i] = arcs_[slot(i)];
     if (parents.size() != 0) parents[i] = parents_[slot(i)];
   }
   samples_.swap(samples);
+  arcs_.swap(arcs);
   parents_.swap(parents);
   head_ = 0;
 }
@@ -129,6 +139,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
       if (count_ == 1 && parents_.size() == 0) only_parent_ = sample.parent;
       makeRoomForParent(sample.parent);
       put(index, sample.stamp, sample.parent, sample.transform);
+      refreshArcsAround(index);
       noteParentChanges(index);
       refreshEnds();
       return InsertOutcome::kReplaced;
@@ -146,6 +157,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     for (std::size_t i = count_; i > insert_at; --i) move(i - 1, i);
     put(insert_at, sample.stamp, sample.parent, sample.transform);
     ++count_;
+    refreshArcsAround(insert_at);
     noteParentChanges(insert_at);
     refreshEnds();
     return dropped ? InsertOutcome::kAddedDroppingOldest : InsertOutcome::kAdded;
@@ -156,6 +168,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
   makeRoomForParent(sample.parent);
   put(count_, sample.stamp, sample.parent, sample.transform);
   ++count_;
+  if (count_ > 1) refreshArc(count_ - 2);
   noteParentChanges(count_ - 1);
   const std::int64_t horizon = saturatingSubtract(sample.stamp, cache_time);
   while (stampAt(0) < horizon) dropOldest();
