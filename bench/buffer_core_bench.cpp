@@ -210,10 +210,9 @@ void registerTimed(std::size_t shape, Timed kind) {
   const Workload& w = workload(shape);
   switch (kind) {
     case Timed::kInsert:
-      benchmark::RegisterBenchmark(benchName(Subject::kName, shape, "insert").c_str(),
-                                   [shape](benchmark::State& state) {
-                                     insertBench<Subject>(state, shape);
-                                   });
+      benchmark::RegisterBenchmark(
+          benchName(Subject::kName, shape, "insert").c_str(),
+          [shape](benchmark::State& state) { insertBench<Subject>(state, shape); });
       break;
     case Timed::kRandom:
       addLookup<Subject>(shape, "lookup_random", w.random_pairs,

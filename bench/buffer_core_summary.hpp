@@ -18,7 +18,7 @@ struct SummaryRow {
   const char* label;
   const char* ours;
   const char* theirs;
-  double target;          // tf2 / lcmtf at least this; 0 for none
+  double target;         // tf2 / lcmtf at least this; 0 for none
   double forest_target;  // the same on the 100,000-frame forest
 };
 
@@ -39,8 +39,8 @@ inline double spreadPercent(const RecordingReporter::Result& result) {
   return 100.0 * (result.slowest_time - result.real_time) / result.real_time;
 }
 
-inline void printShapeRows(const RecordingReporter& reporter, const std::string& shape,
-                           bool forest, double memory_latency_ns) {
+inline void printShapeRows(const RecordingReporter& reporter, const std::string& shape, bool forest,
+                           double memory_latency_ns) {
   std::printf("\n%-38s %9s %7s %9s %7s %9s %7s\n", (shape + ": ns per call").c_str(), "lcmtf",
               "spread", "tf2", "spread", "tf2/lcmtf", "target");
   for (const SummaryRow& row : kSummaryRows) {
@@ -61,14 +61,17 @@ inline void printShapeRows(const RecordingReporter& reporter, const std::string&
     }
     std::printf("\n");
   }
-  const double ours_sample = counter(reporter.find("lcmtf/" + shape + "/memory"), "bytes_per_sample");
-  const double theirs_sample = counter(reporter.find("tf2/" + shape + "/memory"), "bytes_per_sample");
+  const double ours_sample =
+      counter(reporter.find("lcmtf/" + shape + "/memory"), "bytes_per_sample");
+  const double theirs_sample =
+      counter(reporter.find("tf2/" + shape + "/memory"), "bytes_per_sample");
   const double ours_frame = counter(reporter.find("lcmtf/" + shape + "/memory"), "bytes_per_frame");
   const double theirs_frame = counter(reporter.find("tf2/" + shape + "/memory"), "bytes_per_frame");
   if (!std::isnan(ours_sample)) {
-    std::printf("heap per stored sample: lcmtf %.1f B, tf2 %.1f B (target: no more than tf2's; "
-                "aim 64 B) %s\n",
-                ours_sample, theirs_sample, ours_sample <= theirs_sample ? "met" : "MISSED");
+    std::printf(
+        "heap per stored sample: lcmtf %.1f B, tf2 %.1f B (target: no more than tf2's; "
+        "aim 64 B) %s\n",
+        ours_sample, theirs_sample, ours_sample <= theirs_sample ? "met" : "MISSED");
     std::printf("heap per frame:         lcmtf %.0f B, tf2 %.0f B%s\n", ours_frame, theirs_frame,
                 forest ? (ours_frame <= theirs_frame ? " (target: no more than tf2's) met"
                                                      : " (target: no more than tf2's) MISSED")
@@ -82,13 +85,16 @@ inline void printShapeRows(const RecordingReporter& reporter, const std::string&
 /// lookups in the forest, far larger than the caches, are given in those too.
 inline void printSummary(const RecordingReporter& reporter, const std::vector<std::string>& shapes,
                          double memory_latency_ns) {
-  std::printf("\nEach figure is the fastest of the alternating rounds; spread is how much slower "
-              "the slowest round was.\n");
+  std::printf(
+      "\nEach figure is the fastest of the alternating rounds; spread is how much slower "
+      "the slowest round was.\n");
   for (const std::string& shape : shapes) {
     detail::printShapeRows(reporter, shape, shape == shapes.back(), memory_latency_ns);
   }
-  std::printf("\nA load that misses every cache takes %.1f ns here (a pointer chase through 256 "
-              "MB).\n", memory_latency_ns);
+  std::printf(
+      "\nA load that misses every cache takes %.1f ns here (a pointer chase through 256 "
+      "MB).\n",
+      memory_latency_ns);
   std::printf("\n");
   for (const char* library : {"lcmtf", "tf2"}) {
     const std::string prefix = std::string(library) + "/" + shapes.front() + "/";
@@ -97,9 +103,10 @@ inline void printSummary(const RecordingReporter& reporter, const std::vector<st
     const double two =
         counter(reporter.find(prefix + "lookups_with_writer/readers:2"), "lookups_per_s");
     if (!std::isnan(one) && !std::isnan(two)) {
-      std::printf("%-6s lookups/s with a writer (%s): 1 reader %.3g, 2 readers %.3g, 2/1 = %.2f "
-                  "(target 1.8)\n",
-                  library, shapes.front().c_str(), one, two, two / one);
+      std::printf(
+          "%-6s lookups/s with a writer (%s): 1 reader %.3g, 2 readers %.3g, 2/1 = %.2f "
+          "(target 1.8)\n",
+          library, shapes.front().c_str(), one, two, two / one);
     }
   }
 }

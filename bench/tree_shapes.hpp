@@ -109,9 +109,8 @@ Workload makeWorkload(const char* shape, std::size_t samples, std::uint64_t seed
 /// The robot of the first measurements: 100 frames, a third of the edges dynamic with 10 s at
 /// 100 Hz, one limb 27 deep.
 inline Workload makePr2Workload() {
-  return detail::makeWorkload("pr2", 1000, 20240601, 1.0 / 3.0, [](Workload& w, auto& rng) {
-    detail::buildPr2Tree(w, rng, 100);
-  });
+  return detail::makeWorkload("pr2", 1000, 20240601, 1.0 / 3.0,
+                              [](Workload& w, auto& rng) { detail::buildPr2Tree(w, rng, 100); });
 }
 
 /// 100 frames around a chain 30 edges deep, a third of the edges dynamic with 10 s at 100 Hz.
@@ -123,16 +122,14 @@ inline Workload makeDeepChainWorkload() {
 
 /// 1,000 frames at most five edges below the root, a third dynamic with 10 s at 100 Hz.
 inline Workload makeWideWorkload() {
-  return detail::makeWorkload("wide", 1000, 1000, 1.0 / 3.0, [](Workload& w, auto& rng) {
-    detail::buildWideTree(w, rng, 1000);
-  });
+  return detail::makeWorkload("wide", 1000, 1000, 1.0 / 3.0,
+                              [](Workload& w, auto& rng) { detail::buildWideTree(w, rng, 1000); });
 }
 
 /// 100,000 frames in ten 4-ary trees, half the edges dynamic with 0.2 s at 100 Hz.
 inline Workload makeForestWorkload() {
-  return detail::makeWorkload("forest", 20, 100000, 0.5, [](Workload& w, auto&) {
-    detail::buildForest(w, 10, 10'000);
-  });
+  return detail::makeWorkload("forest", 20, 100000, 0.5,
+                              [](Workload& w, auto&) { detail::buildForest(w, 10, 10'000); });
 }
 
 }  // namespace bench

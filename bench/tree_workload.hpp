@@ -47,8 +47,8 @@ struct Workload {
   std::vector<std::size_t> root;
   std::vector<Edge> edges;  // one per frame that is not a root, in the order frames were made
   std::vector<std::size_t> edge_of_frame;  // the index in `edges` of each non-root frame's edge
-  std::size_t deepest = 0;  // the deepest frame of frame 0's tree
-  std::int64_t oldest_common = 0;  // every dynamic edge has data in [oldest, newest]
+  std::size_t deepest = 0;                 // the deepest frame of frame 0's tree
+  std::int64_t oldest_common = 0;          // every dynamic edge has data in [oldest, newest]
   std::int64_t newest_common = 0;
   std::vector<Query> random_pairs;   // two frames of one tree, at random times
   std::vector<Query> deepest_chain;  // frame 0 and `deepest`, either way round
@@ -174,8 +174,8 @@ inline void buildQueries(Workload& w, std::mt19937_64& rng) {
   for (const Edge& e : w.edges) {
     if (!e.dynamic) continue;
     w.oldest_common = first ? w.stamp(e, 0) : std::max(w.oldest_common, w.stamp(e, 0));
-    w.newest_common = first ? w.stamp(e, w.samples - 1)
-                            : std::min(w.newest_common, w.stamp(e, w.samples - 1));
+    w.newest_common =
+        first ? w.stamp(e, w.samples - 1) : std::min(w.newest_common, w.stamp(e, w.samples - 1));
     first = false;
   }
   w.deepest = 0;

@@ -58,8 +58,7 @@ struct Frames {
 };
 
 // Where each step of `frame`'s path ends, or nothing when the frame has no path.
-std::optional<Hops> hopsOf(const FrameTable& frames, const RootPaths& paths,
-                           FrameId frame) {
+std::optional<Hops> hopsOf(const FrameTable& frames, const RootPaths& paths, FrameId frame) {
   RootPaths::Path path;
   if (!paths.find(frames, frame, path)) return std::nullopt;
   Hops hops;
@@ -73,8 +72,7 @@ FrameId rootOf(const FrameTable& frames, const RootPaths& paths, FrameId frame) 
 }
 
 // The steps up from `frame` taken one stepFrom() at a time; nothing when they go round a loop.
-std::optional<std::vector<RootStep>> climbFrom(const FrameTable& frames,
-                                               FrameId frame) {
+std::optional<std::vector<RootStep>> climbFrom(const FrameTable& frames, FrameId frame) {
   std::vector<RootStep> steps;
   for (RootStep step = stepFrom(frames, frame); step.next != kNoFrame;
        step = stepFrom(frames, step.next)) {
@@ -97,8 +95,7 @@ std::optional<std::vector<RootStep>> climbFrom(const FrameTable& frames,
          << ")";
 }
 
-void expectLinksUpToItsRoot(const FrameTable& frames, FrameId frame,
-                            const RootPaths::Path& path) {
+void expectLinksUpToItsRoot(const FrameTable& frames, FrameId frame, const RootPaths::Path& path) {
   if (path.size == 0) {
     EXPECT_EQ(path.root, frame);
   } else {
@@ -232,8 +229,7 @@ TEST(RootPaths, PathsLongerThanTheLongestAreNotUsable) {
 }
 
 // Both find a path for the same frames, with the same steps.
-void expectSamePaths(const FrameTable& frames, const RootPaths& actual,
-                     const RootPaths& expected) {
+void expectSamePaths(const FrameTable& frames, const RootPaths& actual, const RootPaths& expected) {
   for (FrameId frame = 1; frame < frames.size(); ++frame) {
     SCOPED_TRACE("frame " + std::string(frames[frame].name));
     RootPaths::Path path;

@@ -31,8 +31,8 @@ thread_local WalkScratch scratch;
 }  // namespace
 
 // Walks up from `start` for more steps than there are frames to find the frames of the loop.
-std::vector<FrameId> findLoop(const FrameTable& frames, FrameId start,
-                              std::int64_t stamp, bool latest) {
+std::vector<FrameId> findLoop(const FrameTable& frames, FrameId start, std::int64_t stamp,
+                              bool latest) {
   std::vector<FrameId> visited;
   FrameId frame = start;
   while (frame != kNoFrame && visited.size() <= 2 * frames.size()) {
@@ -50,8 +50,7 @@ namespace {
 
 // The edge up from `frame`, as it was at `stamp` (0: as of its newest sample); its parent is
 // kNoFrame at a root.
-void stepUp(const FrameTable& frames, FrameId frame, std::int64_t stamp,
-            PathEdge& edge) {
+void stepUp(const FrameTable& frames, FrameId frame, std::int64_t stamp, PathEdge& edge) {
   const detail::TimeCache& cache = frames[frame].cache;
   edge.child = frame;
   edge.status = SampleStatus::kOk;
@@ -91,8 +90,7 @@ Transform pathValue(const FrameTable& frames, WalkScratch& s, std::int64_t stamp
 }
 
 // A dynamic edge without data at `stamp`, as a failure.
-LookupFailure missingData(const FrameTable& frames, const PathEdge& edge,
-                          std::int64_t stamp) {
+LookupFailure missingData(const FrameTable& frames, const PathEdge& edge, std::int64_t stamp) {
   const detail::TimeCache& cache = frames[edge.child].cache;
   LookupFailure failure;
   failure.kind = edge.status == SampleStatus::kPast ? LookupFailure::Kind::kPast
@@ -106,8 +104,7 @@ LookupFailure missingData(const FrameTable& frames, const PathEdge& edge,
 }
 
 // The newest stamp every dynamic edge of the walk has data at; 0 when all are static.
-std::int64_t commonNewest(const FrameTable& frames,
-                          const std::vector<PathEdge>& source_edges,
+std::int64_t commonNewest(const FrameTable& frames, const std::vector<PathEdge>& source_edges,
                           const std::vector<PathEdge>& target_edges) {
   CommonNewest common;
   for (const auto* edges : {&source_edges, &target_edges}) {

@@ -110,9 +110,8 @@ bool mayDifferAbove(const RootPaths::Path& path, std::size_t from, std::int64_t 
 // plan's `at` then gives), starting the loads of the samples when `prefetch`; false when the
 // root paths cannot answer. `parent_changes` says whether any edge's history holds more than
 // one parent.
-bool planPath(const RootPaths& root_paths, const FrameTable& frames, FrameId target,
-              FrameId source, std::int64_t stamp, bool prefetch, bool parent_changes,
-              QuickPath& path) {
+bool planPath(const RootPaths& root_paths, const FrameTable& frames, FrameId target, FrameId source,
+              std::int64_t stamp, bool prefetch, bool parent_changes, QuickPath& path) {
   RootPaths::Path up_from_source;
   RootPaths::Path up_from_target;
   if (!root_paths.find(frames, source, up_from_source) ||

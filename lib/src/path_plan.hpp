@@ -14,12 +14,12 @@ namespace lcmtf::detail {
 /// A step of a planned path: a static value, or a dynamic edge's history to sample. Left
 /// uninitialized in arrays sized for the longest path; planners set every field.
 struct PlanStep {
-  const TimeCache* cache;  // null for a static step
-  const Transform* fixed;  // a static step's value
+  const TimeCache* cache;   // null for a static step
+  const Transform* fixed;   // a static step's value
   const Transform* anchor;  // the static chain above the edge's parent, composed onto its value;
-                           // null for none
-  bool single_parent;      // every sample the time may fall between has the edge's newest parent
-  std::size_t hint;        // where the samples likely are (TimeCache::prefetch), or kNoHint
+                            // null for none
+  bool single_parent;       // every sample the time may fall between has the edge's newest parent
+  std::size_t hint;         // where the samples likely are (TimeCache::prefetch), or kNoHint
 };
 
 /// A lookup's path, whichever way it was found (the root paths or the walk): the steps up from

@@ -28,9 +28,9 @@ void pause() {
 
 // Spins until `done()` or kLongestSpin has passed; whether `done()`. After a few pauses it
 // yields too, which hands the core to an ordinary thread it waits for on the same core (a
-// real-time thread's yield does not, and it soon sleeps instead).
-// The clock is read only once the pauses are over: most waits end before, and a writer
-// checks every slot, most of them empty, on each lock().
+// real-time thread's yield does not, and it soon sleeps instead). The clock is read only once
+// the pauses are over: most waits end before, and a writer checks slots, most of them empty, on
+// each lock().
 template <class Done>
 bool spinUntil(Done done) {
   constexpr unsigned kPausesBeforeYielding = 64;

@@ -42,8 +42,8 @@ RootStep* RootPaths::allocateSteps(std::size_t count) {
   constexpr std::size_t kFirstChunk = 256;
   constexpr std::size_t kLargestChunk = std::size_t{1} << 16;
   if (step_chunks_.empty() || last_chunk_used_ + count > last_chunk_size_) {
-    last_chunk_size_ = step_chunks_.empty() ? kFirstChunk
-                                            : std::min(2 * last_chunk_size_, kLargestChunk);
+    last_chunk_size_ =
+        step_chunks_.empty() ? kFirstChunk : std::min(2 * last_chunk_size_, kLargestChunk);
     last_chunk_size_ = std::max<std::size_t>(last_chunk_size_, count);
     step_chunks_.emplace_back(new RootStep[last_chunk_size_]);
     last_chunk_used_ = 0;

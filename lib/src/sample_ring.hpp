@@ -50,11 +50,10 @@ class SampleRing {
   // Where the translation ends and the rotation begins, both doubles.
   static constexpr std::size_t kTranslationEnd = sizeof(Eigen::Vector3d);
   static constexpr std::size_t kRotationStart = sizeof(Transform) - sizeof(Eigen::Quaterniond);
-  static constexpr bool kStampInPadding =
-      kRotationStart >= kTranslationEnd + sizeof(std::int64_t);
+  static constexpr bool kStampInPadding = kRotationStart >= kTranslationEnd + sizeof(std::int64_t);
   static constexpr std::size_t kStampOffset = kStampInPadding ? kTranslationEnd : sizeof(Transform);
-  static constexpr std::size_t kUsedBytes = kStampInPadding ? sizeof(Transform)
-                                                            : sizeof(Transform) + sizeof(std::int64_t);
+  static constexpr std::size_t kUsedBytes =
+      kStampInPadding ? sizeof(Transform) : sizeof(Transform) + sizeof(std::int64_t);
   struct alignas(64) Slot {
     unsigned char bytes[kUsedBytes];
   };

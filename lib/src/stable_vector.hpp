@@ -31,8 +31,8 @@ class StableVector {
       // Storage left uninitialized: each element is constructed as it is added.
       chunks_.emplace_back(new Storage[kFirstChunk << place.chunk]);
     }
-    T* element = ::new (static_cast<void*>(&chunks_[place.chunk][place.offset])) T(
-        std::forward<Args>(args)...);
+    T* element = ::new (static_cast<void*>(&chunks_[place.chunk][place.offset]))
+        T(std::forward<Args>(args)...);
     ++size_;
     return *element;
   }

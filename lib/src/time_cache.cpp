@@ -65,8 +65,9 @@ void TimeCache::put(std::size_t index, std::int64_t stamp, FrameId parent,
   }
 }
 
-void TimeCache::makeRoomForParent(FrameId parent) {
-  if (parents_.size() == 0 && count_ > 0 && parent != only_parent_) keepParents();
+void TimeCache::makeRoomForParent(FrameId parent, bool replacing) {
+  const std::size_t staying = replacing ? count_ - 1 : count_;
+  if (parents_.size() == 0 && staying > 0 && parent != only_parent_) keepParents();
 }
 
 void TimeCache::move(std::size_t from, std::size_t to) {
@@ -79,7 +80,8 @@ void TimeCache::move(std::size_t from, std::size_t to) {
 
 void TimeCache::refreshArc(std::size_t index) {
   if (index + 1 >= count_) return;
-  arcs_[slot(index)] = signedArcSquared(transformAt(index).rotation, transformAt(index + 1).rotation);
+  arcs_[slot(index)] =
+      signedArcSquared(transformAt(index).rotation, transformAt(index + 1).rotation);
 }
 
 void TimeCache::noteParentChanges(std::size_t index) {
@@ -135,9 +137,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
   if (count_ > 0 && sample.stamp <= newest_stamp_) {
     std::size_t index = indexAtOrBefore(sample.stamp);
     if (index < count_ && stampAt(index) == sample.stamp) {
-      // Replacing the only sample may change the only parent.
-      if (count_ == 1 && parents_.size() == 0) only_parent_ = sample.parent;
-      makeRoomForParent(sample.parent);
+      makeRoomForParent(sample.parent, true);
       put(index, sample.stamp, sample.parent, sample.transform);
       refreshArcsAround(index);
       noteParentChanges(index);
@@ -151,7 +151,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
       --index;
     }
     if (count_ == samples_.size()) grow(cache_time, most_samples);
-    makeRoomForParent(sample.parent);
+    makeRoomForParent(sample.parent, false);
     // Shift the samples newer than `sample` one place towards the back.
     const std::size_t insert_at = dropped || index < count_ ? index + 1 : 0;
     for (std::size_t i = count_; i > insert_at; --i) move(i - 1, i);
@@ -165,7 +165,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
   const bool dropped = count_ >= most_samples;
   if (dropped) dropOldest();
   if (count_ == samples_.size()) grow(cache_time, most_samples);
-  makeRoomForParent(sample.parent);
+  makeRoomForParent(sample.parent, false);
   put(count_, sample.stamp, sample.parent, sample.transform);
   ++count_;
   if (count_ > 1) refreshArc(count_ - 2);
