@@ -3,7 +3,8 @@
 # With --tests it also installs what only the tests use: ROS tf2 (libtf2-dev, with the
 # geometry_msgs and tf2_geometry_msgs headers and KDL's), which the agreement tests check lcmtf
 # against, its Python binding for the Python benchmark's comparison, pytest, and Xvfb with a
-# Java that draws windows, under which the lcm-spy tables are drawn. Nothing lcmtf builds for
+# Java that draws windows, under which the lcm-spy tables are drawn, and Chromium with a
+# WebSocket client for Python, which drive the viewer's page. Nothing lcmtf builds for
 # users links them.
 set -euo pipefail
 
@@ -15,10 +16,11 @@ packages=(
   default-jdk-headless libjchart2d-java
   clang libclang-rt-14-dev
   python3 python3-dev pybind11-dev python3-pybind11 python3-numpy
+  libboost-dev nlohmann-json3-dev libjs-three
 )
 if [ "${1:-}" = "--tests" ]; then
   packages+=(libtf2-dev libgeometry-msgs-dev libtf2-geometry-msgs-dev liborocos-kdl-dev
-    python3-pytest python3-tf2 xvfb xauth default-jre)
+    python3-pytest python3-tf2 xvfb xauth default-jre chromium python3-websocket)
 fi
 
 missing=()

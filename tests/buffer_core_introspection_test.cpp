@@ -41,6 +41,26 @@ class BufferCoreIntrospection : public ::testing::Test {
   BufferCore buffer_;
 };
 
+TEST_F(BufferCoreIntrospection, DescribeEdgesGivesEachEdgesParentSenderRateAndHistory) {
+  buffer_.resolveFrame("lonely");  // a frame with no parent is no edge
+  const std::vector<EdgeDescription> edges = buffer_.describeEdges();
+  ASSERT_EQ(edges.size(), 2u);
+  EXPECT_EQ(edges[0].child, "base");
+  EXPECT_EQ(edges[0].parent, "world");
+  EXPECT_EQ(edges[0].authority, "driver");
+  EXPECT_FALSE(edges[0].is_static);
+  EXPECT_EQ(edges[0].samples, 10u);
+  EXPECT_NEAR(edges[0].rate_hz, 100.0, 1e-9);
+  EXPECT_EQ(edges[0].oldest, at(1));
+  EXPECT_EQ(edges[0].newest, at(1) + std::chrono::milliseconds(90));
+  EXPECT_EQ(edges[1].child, "laser");
+  EXPECT_EQ(edges[1].parent, "base");
+  EXPECT_EQ(edges[1].authority, "calib");
+  EXPECT_TRUE(edges[1].is_static);
+  EXPECT_EQ(edges[1].rate_hz, 0.0);
+  EXPECT_EQ(edges[1].newest, TimePoint());
+}
+
 TEST_F(BufferCoreIntrospection, AllFrameNamesListsEveryFrameOnceInOrderOfAppearance) {
   put(buffer_, "laser", "spot", at(1), pose({1, 0, 0}, 0, kZ));
   put(buffer_, "world", "base", at(2), pose({0, 0, 0}, 0, kZ));

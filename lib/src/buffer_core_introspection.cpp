@@ -49,6 +49,26 @@ std::string fixed(double value, int digits) {
 
 }  // namespace
 
+std::vector<EdgeDescription> BufferCore::describeEdges() const {
+  std::shared_lock<detail::ReadMostlyLock> lock(impl_->lock_);
+  std::vector<EdgeDescription> edges;
+  for (std::size_t id = 1; id < impl_->frames_.size(); ++id) {
+    const FrameRecord& frame = impl_->frames_[id];
+    if (frame.cache.empty()) continue;
+    const EdgeSummary summary = summarize(frame.cache);
+    EdgeDescription& edge = edges.emplace_back();
+    edge.child = frame.name;
+    edge.parent = impl_->nameOf(frame.cache.newestParent());
+    if (frame.authority) edge.authority = impl_->authorities_.name(frame.authority);
+    edge.is_static = summary.is_static;
+    edge.rate_hz = summary.rate_hz;
+    edge.samples = summary.samples;
+    edge.oldest = fromUtime(summary.oldest);
+    edge.newest = fromUtime(summary.newest);
+  }
+  return edges;
+}
+
 std::string BufferCore::allFramesAsYaml() const {
   std::shared_lock<detail::ReadMostlyLock> lock(impl_->lock_);
   std::ostringstream yaml;

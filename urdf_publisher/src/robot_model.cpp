@@ -8,7 +8,7 @@
 
 #include "lcmtf/programs/number_text.hpp"
 #include "mimic_chains.hpp"
-#include "urdfdom_parse.hpp"
+#include "lcmtf_urdf/urdfdom_parse.hpp"
 
 namespace lcmtf::urdf {
 

@@ -1,4 +1,4 @@
-#include "urdfdom_parse.hpp"
+#include "lcmtf_urdf/urdfdom_parse.hpp"
 
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>

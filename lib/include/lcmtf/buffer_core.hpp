@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "lcmtf/edge_description.hpp"
 #include "lcmtf/exceptions.hpp"
 #include "lcmtf/insert_statistics.hpp"
 #include "lcmtf/time.hpp"
@@ -102,6 +103,8 @@ class BufferCore {
   /// The frames from `source` up to the common ancestor and down to `target`, at `time`.
   std::vector<std::string> getFrameChain(const std::string& target, const std::string& source,
                                          TimePoint time = kLatestTime) const;
+  /// Every edge held, in the order its child frame appeared.
+  std::vector<EdgeDescription> describeEdges() const;
   /// Per frame: parent, authority, average rate, samples held, oldest and newest stamp.
   std::string allFramesAsYaml() const;
   /// The tree as a Graphviz digraph, edges labelled with authority, rate and history.
