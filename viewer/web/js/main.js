@@ -60,6 +60,7 @@ let pausedTime = null; // null: live
 let chosenFixedFrame = null; // the user's choice, sent again after reconnecting
 let viewSentAt = null;
 let fitPending = true;
+let fittedFrames = 0; // frames drawn when the camera was last fitted by itself
 let frameOptionsKey = '';
 const hudFps = $('hud-fps');
 const renderMeter = new FpsMeter();
@@ -98,6 +99,7 @@ function handleMessage(msg) {
 function onHello(msg) {
   stats.serverVersion = typeof msg.version === 'string' ? msg.version : null;
   store.reset();
+  fittedFrames = 0;
   pendingAck = null;
   sceneChanged = true;
   // A new connection starts live, in the user's fixed frame if one was chosen.
@@ -202,10 +204,15 @@ function updateFixedFrameChoices() {
   }
 }
 
+// Frames the robot (its visuals and link frames) when one is drawn, else every frame.
 function fitView() {
   const box = robot.boundingBox();
   const point = new THREE.Vector3();
-  for (const pose of store.poses.values()) box.expandByPoint(point.set(pose[0], pose[1], pose[2]));
+  const robotOnly = !box.isEmpty();
+  for (const [name, pose] of store.poses) {
+    if (robotOnly && !robot.links.has(name)) continue;
+    box.expandByPoint(point.set(pose[0], pose[1], pose[2]));
+  }
   view.frameBox(box);
 }
 
@@ -266,8 +273,12 @@ function animate(now) {
     sceneChanged = false;
     drawScene();
   }
-  if (fitPending && store.poses.size > 0 && !view.userMovedCamera) {
+  // Until the user moves the camera, it frames everything whenever more frames or the
+  // robot's meshes arrive.
+  if (!view.userMovedCamera && store.poses.size > 0 &&
+      (fitPending || store.poses.size > fittedFrames)) {
     fitPending = false;
+    fittedFrames = store.poses.size;
     fitView();
   }
   if (view.needsRender) {

@@ -73,7 +73,7 @@ export class SceneView {
     const radius = Math.max(0.3, box.getSize(new THREE.Vector3()).length() / 2);
     const halfFov = (this.camera.fov / 2) * (Math.PI / 180);
     const fitFov = this.camera.aspect < 1 ? Math.atan(Math.tan(halfFov) * this.camera.aspect) : halfFov;
-    const distance = (radius / Math.sin(fitFov)) * 1.05;
+    const distance = (radius / Math.sin(fitFov)) * 0.9;
     const direction = new THREE.Vector3(1.0, -0.9, 0.65).normalize();
     this.camera.position.copy(center).addScaledVector(direction, distance);
     this.camera.near = Math.max(0.001, distance / 200);
