@@ -201,7 +201,9 @@ TEST_F(WebServerTest, AMessageOverTheLimitClosesThePageWith1009) {
   beast::flat_buffer buffer;
   beast::error_code error;
   client->socket.read(buffer, error);
-  EXPECT_EQ(error, websocket::error::closed);
+  // The server tears the connection down right after its close frame: the client's own close
+  // reply may find it gone already.
+  EXPECT_TRUE(error == websocket::error::closed || error == asio::error::not_connected) << error;
   EXPECT_EQ(client->socket.reason().code, websocket::close_code::too_big);
   EXPECT_TRUE(handler_->waitForClosed(1));
   EXPECT_EQ(server_->statistics().messages_too_large.load(), 1u);
