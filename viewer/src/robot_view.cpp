@@ -20,6 +20,7 @@ json poseArray(const ::urdf::Pose& pose) {
                       pose.rotation.y, pose.rotation.z, pose.rotation.w});
 }
 
+// urdfdom refuses what is not a number, but a visual must never reach the page with one.
 bool allFinite(const json& value) {
   if (value.is_number_float()) return std::isfinite(value.get<double>());
   if (value.is_array() || value.is_object()) {
@@ -120,7 +121,9 @@ class ViewBuilder {
     if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b) || !std::isfinite(c.a)) {
       return nullptr;
     }
-    return json::array({c.r, c.g, c.b, c.a});
+    // urdfdom keeps colours as floats: 0.8 would come out as 0.800000011920929.
+    auto decimal = [](float channel) { return std::round(double{channel} * 1e6) / 1e6; };
+    return json::array({decimal(c.r), decimal(c.g), decimal(c.b), decimal(c.a)});
   }
 
   const ::urdf::ModelInterface& urdf_;
