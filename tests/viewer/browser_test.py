@@ -18,7 +18,11 @@ import traceback
 import xml.etree.ElementTree as ElementTree
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import cdp  # noqa: E402
+try:
+    import cdp  # noqa: E402
+except ImportError as missing:  # Debian's python3-websocket
+    print(f"SKIPPED: {missing}")
+    sys.exit(77)
 from viewer_processes import Programs, lcm_url  # noqa: E402
 
 SKIP = 77
