@@ -78,6 +78,10 @@ class WebServer::Impl {
         if (state_.open_connections >= state_.options.max_connections) {
           ++state_.statistics.connections_refused;
         } else {
+          // Small messages (a scene after a page's ack) go out at once, not after the page's
+          // delayed TCP acknowledgement.
+          boost::system::error_code ignored;
+          socket.set_option(tcp::no_delay(true), ignored);
           std::make_shared<web::HttpConnection>(std::move(socket), state_)->start();
         }
       }
