@@ -131,6 +131,9 @@ function onScene(msg) {
   store.applyScene(msg);
   if (Number.isInteger(msg.seq)) pendingAck = msg.seq;
   sceneChanged = true;
+  // Drawn at once rather than at the next animation frame, so that the ack (and with it the
+  // next scene) is not held back; a hidden page draws and acks only when it shows again.
+  if (!document.hidden) draw(performance.now());
 }
 
 function onTree(msg) {
@@ -266,8 +269,8 @@ function drawScene() {
   view.needsRender = true;
 }
 
-function animate(now) {
-  frameMeter.tick(now);
+// Draws what changed (the last scene, the camera), then acks the scene.
+function draw(now) {
   const drawnScene = sceneChanged;
   if (sceneChanged) {
     sceneChanged = false;
@@ -299,10 +302,18 @@ function animate(now) {
     stats.sceneCount = store.sceneCount;
     if (store.lastSceneFull) stats.fullSceneCount += 1;
   }
+}
+
+let hudShownAt = 0;
+function animate(now) {
+  frameMeter.tick(now);
+  draw(now);
   stats.fps = frameMeter.fps;
   stats.rendersPerSecond = renderMeter.fps;
-  const fpsText = `${stats.fps} fps`;
-  if (hudFps.textContent !== fpsText) hudFps.textContent = fpsText;
+  if (now - hudShownAt >= 1000) {
+    hudShownAt = now;
+    hudFps.textContent = `${stats.fps} fps`;
+  }
   requestAnimationFrame(animate);
 }
 
