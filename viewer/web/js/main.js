@@ -62,6 +62,7 @@ let viewSentAt = null;
 let fitPending = true;
 let fittedFrames = 0; // frames drawn when the camera was last fitted by itself
 let frameOptionsKey = '';
+let shownFixedFrame = null; // the server's fixed frame when the choices were last updated
 const hudFps = $('hud-fps');
 const renderMeter = new FpsMeter();
 const frameMeter = new FpsMeter();
@@ -131,9 +132,6 @@ function onScene(msg) {
   store.applyScene(msg);
   if (Number.isInteger(msg.seq)) pendingAck = msg.seq;
   sceneChanged = true;
-  // Drawn at once rather than at the next animation frame, so that the ack (and with it the
-  // next scene) is not held back; a hidden page draws and acks only when it shows again.
-  if (!document.hidden) draw(performance.now());
 }
 
 function onTree(msg) {
@@ -198,6 +196,7 @@ function updateFixedFrameChoices() {
   if (current !== null && !names.includes(current)) names.push(current);
   const key = names.join('\n');
   const selectBox = $('fixed-frame');
+  shownFixedFrame = store.fixedFrame;
   if (key !== frameOptionsKey) {
     frameOptionsKey = key;
     selectBox.replaceChildren(...names.map((name) => new Option(name, name)));
@@ -259,7 +258,7 @@ function drawScene() {
   timeline.update(store);
   posePanel.update(store);
   treePanel.updateFlags(store);
-  updateFixedFrameChoices();
+  if (store.fixedFrame !== shownFixedFrame) updateFixedFrameChoices();
   stats.framesDrawn = store.poses.size;
   stats.fixedFrame = store.fixedFrame;
   stats.time = store.time;

@@ -3,12 +3,29 @@
 import * as THREE from '/three/build/three.module.js';
 import { OrbitControls } from '/three/examples/jsm/controls/OrbitControls.js';
 
+// WebGL drawn by the CPU (SwiftShader, llvmpipe): no GPU to smooth edges for free.
+function softwareWebGl() {
+  const gl = document.createElement('canvas').getContext('webgl');
+  if (!gl) return true;
+  const info = gl.getExtension('WEBGL_debug_renderer_info');
+  const renderer = info ? String(gl.getParameter(info.UNMASKED_RENDERER_WEBGL)) : '';
+  const lose = gl.getExtension('WEBGL_lose_context');
+  if (lose) lose.loseContext();
+  return /swiftshader|llvmpipe|software/i.test(renderer);
+}
+
+// Edges are smoothed unless WebGL runs on the CPU, where it costs the most; ?antialias=1 or
+// ?antialias=0 in the page's URL decides instead.
+function wantAntialias() {
+  const asked = new URLSearchParams(location.search).get('antialias');
+  if (asked === '1' || asked === '0') return asked === '1';
+  return !softwareWebGl();
+}
+
 export class SceneView {
   constructor(container) {
     this.container = container;
-    // Smoothing edges costs most where WebGL runs on the CPU: ?antialias=0 turns it off.
-    const antialias = new URLSearchParams(location.search).get('antialias') !== '0';
-    this.renderer = new THREE.WebGLRenderer({ antialias });
+    this.renderer = new THREE.WebGLRenderer({ antialias: wantAntialias() });
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
     this.renderer.setClearColor(0x1b1e24);
     container.appendChild(this.renderer.domElement);
@@ -73,7 +90,7 @@ export class SceneView {
     const radius = Math.max(0.3, box.getSize(new THREE.Vector3()).length() / 2);
     const halfFov = (this.camera.fov / 2) * (Math.PI / 180);
     const fitFov = this.camera.aspect < 1 ? Math.atan(Math.tan(halfFov) * this.camera.aspect) : halfFov;
-    const distance = (radius / Math.sin(fitFov)) * 0.9;
+    const distance = radius / Math.sin(fitFov);
     const direction = new THREE.Vector3(1.0, -0.9, 0.65).normalize();
     this.camera.position.copy(center).addScaledVector(direction, distance);
     this.camera.near = Math.max(0.001, distance / 200);
