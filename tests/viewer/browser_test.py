@@ -5,13 +5,16 @@ Cases (--case):
   demo             the demo robot sweeping: every link listed, the view drawn and moving, pausing
                    and scrubbing draws an earlier time; --screenshot saves a picture of the page
   joint_sliders    no joint publisher: the page's sliders drive the robot through the viewer
+  reconnect        the viewer restarts: the page says so, reconnects, and keeps its fixed frame
   panda_meshes     the Panda with its COLLADA meshes: all load, none fail
+  panda_stl_meshes the Panda drawn with its STL (collision) meshes
   missing_meshes   the G1, whose meshes are missing: warnings, and every frame still drawn
 Exit status: 0 passed, 1 failed, 77 skipped (no Chromium, or a robot file is missing).
 """
 import argparse
 import math
 import os
+import socket
 import sys
 import time
 import traceback
@@ -272,11 +275,18 @@ def case_joint_sliders(args, browser, programs):
     check_no_page_errors(page)
 
 
-def case_panda_meshes(args, browser, programs):
+def case_panda_meshes(args, browser, programs, stl=False):
     urdf = os.path.join(args.shared_urdf, "panda.urdf")
     packages = os.path.join(args.shared_urdf, "packages")
     if not os.path.isfile(urdf) or not os.path.isdir(packages):
         raise Skip(f"{urdf} or {packages} is missing")
+    if stl:
+        # The same robot drawn with its collision meshes, which are STL files.
+        with open(urdf, encoding="utf-8") as file:
+            text = file.read().replace("/meshes/visual/", "/meshes/collision/").replace(".dae", ".stl")
+        urdf = os.path.join(programs.log_dir, "panda_stl.urdf")
+        with open(urdf, "w", encoding="utf-8") as file:
+            file.write(text)
     url = lcm_url(args.lcm_port)
     programs.start("lcmtf-urdf-publisher", "--lcm-url", url, urdf)
     programs.start("lcmtf-joint-publisher", "--lcm-url", url, "--sweep", urdf)
@@ -293,6 +303,41 @@ def case_panda_meshes(args, browser, programs):
     drawing = describe_drawing(view_pixels(page))
     print(f"view: {drawing['colours']} colours, {drawing['drawn_fraction']:.1%} not background")
     check(drawing["drawn_fraction"] > 0.02, "the Panda is not drawn")
+    check_no_page_errors(page)
+
+
+def case_panda_stl_meshes(args, browser, programs):
+    case_panda_meshes(args, browser, programs, stl=True)
+
+
+def case_reconnect(args, browser, programs):
+    urdf = os.path.join(args.source_dir, "examples", "mobile_manipulator.urdf")
+    url = lcm_url(args.lcm_port)
+    programs.start("lcmtf-urdf-publisher", "--lcm-url", url, urdf)
+    programs.start("lcmtf-joint-publisher", "--lcm-url", url, "--sweep", urdf)
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        port = probe.getsockname()[1]
+    viewer, base = programs.start_viewer(args.lcm_port, port=port)
+    page = open_viewer(browser, base)
+    page.wait_for("lcmtfViewer.framesDrawn >= 26", 20, what="every link drawn")
+    # The user's fixed frame outlives the connection.
+    page.evaluate("(() => { const s = document.getElementById('fixed-frame'); s.value = 'base_link';"
+                  " s.dispatchEvent(new Event('change')); })()")
+    page.wait_for("lcmtfViewer.fixedFrame === 'base_link'", 10, what="the scene in base_link")
+
+    programs.stop(viewer)
+    programs.running.remove(viewer)
+    page.wait_for("lcmtfViewer.connection === 'reconnecting'", 10, what="the page to see it gone")
+    badge = page.evaluate("document.getElementById('connection-state').textContent")
+    print(f"viewer stopped; the page says {badge!r}")
+    check("retrying" in badge, f"the page says {badge!r} while the viewer is gone")
+    time.sleep(2.0)
+    programs.start_viewer(args.lcm_port, port=port)
+    page.wait_for("lcmtfViewer.connection === 'open' && lcmtfViewer.framesDrawn >= 26 &&"
+                  " lcmtfViewer.fixedFrame === 'base_link'", 30,
+                  what="the page to reconnect and draw in base_link again")
+    print("reconnected, drawing in base_link again")
     check_no_page_errors(page)
 
 
@@ -325,7 +370,9 @@ def case_missing_meshes(args, browser, programs):
 CASES = {
     "demo": case_demo,
     "joint_sliders": case_joint_sliders,
+    "reconnect": case_reconnect,
     "panda_meshes": case_panda_meshes,
+    "panda_stl_meshes": case_panda_stl_meshes,
     "missing_meshes": case_missing_meshes,
 }
 

@@ -40,9 +40,10 @@ class Programs:
         self.running.append(process)
         return process
 
-    def start_viewer(self, lcm_port, *args, timeout=20):
-        """Starts lcmtf-viewer on a free TCP port; returns (process, base URL)."""
-        process = self.start("lcmtf-viewer", "--port", "0", "--lcm-url", lcm_url(lcm_port), *args)
+    def start_viewer(self, lcm_port, *args, port=0, timeout=20):
+        """Starts lcmtf-viewer on `port` (0: a free one); returns (process, base URL)."""
+        process = self.start("lcmtf-viewer", "--port", str(port), "--lcm-url", lcm_url(lcm_port),
+                             *args)
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             match = re.search(r"http://127\.0\.0\.1:(\d+)/", self.log(process))
