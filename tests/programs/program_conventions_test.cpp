@@ -92,7 +92,8 @@ INSTANTIATE_TEST_SUITE_P(
                     Program{LCMTF_ECHO_PATH, {"map", "base"}}, Program{LCMTF_MONITOR_PATH, {}},
                     Program{LCMTF_VIEW_FRAMES_PATH, {}},
                     Program{LCMTF_URDF_PUBLISHER_PATH, {EXAMPLE_URDF}, true, true},
-                    Program{LCMTF_JOINT_PUBLISHER_PATH, {EXAMPLE_URDF}, false, true}),
+                    Program{LCMTF_JOINT_PUBLISHER_PATH, {EXAMPLE_URDF}, false, true},
+                    Program{LCMTF_VIEWER_PATH, {"--port", "0"}, true, true}),
     [](const testing::TestParamInfo<Program>& param) {
       std::string name = nameOf(param.param).substr(6);  // without "lcmtf-"
       for (char& c : name) c = c == '-' ? '_' : c;

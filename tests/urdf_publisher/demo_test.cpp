@@ -139,7 +139,7 @@ std::unique_ptr<ChildProcess> startDemo(const std::vector<std::string>& argument
 
 TEST(DemoScript, RunsThePublishersAndListenerForItsDurationThenStopsThemAll) {
   const std::string url = demoUrl();
-  auto demo = startDemo({"--duration", "3.5", "--lcm-url", url});
+  auto demo = startDemo({"--duration", "3.5", "--lcm-url", url, "--viewer-port", "0"});
   ASSERT_EQ(demo->waitForExit(20s), 0) << demo->stdoutText() << demo->stderrText();
   const std::string output = demo->stdoutText();
   EXPECT_THAT(output, HasSubstr("lcmtf-joint-publisher: 14 joints of robot 'mobile_manipulator' "
@@ -148,15 +148,17 @@ TEST(DemoScript, RunsThePublishersAndListenerForItsDurationThenStopsThemAll) {
   EXPECT_THAT(output, HasSubstr("what the camera saw 2.0 s ago"));
   EXPECT_THAT(output, HasSubstr("lcmtf-urdf-publisher: stopped after "));
   EXPECT_THAT(output, HasSubstr("lcmtf-joint-publisher: stopped after "));
+  EXPECT_THAT(output, testing::ContainsRegex("lcmtf-viewer: open http://127\\.0\\.0\\.1:[0-9]+/ in a browser"));
+  EXPECT_THAT(output, HasSubstr("lcmtf-viewer: served "));
   EXPECT_THAT(processesMentioning(url), testing::IsEmpty());
 }
 
 TEST(DemoScript, CtrlCStopsEveryProgramItStarted) {
   const std::string url = demoUrl();
-  auto demo = startDemo({"--lcm-url", url});
+  auto demo = startDemo({"--lcm-url", url, "--viewer-port", "0"});
   ASSERT_TRUE(demo->waitForStdout("joint states from JOINT_STATES", 10s)) << demo->stderrText();
   ASSERT_TRUE(demo->waitForStdout("waiting for transforms", 10s)) << demo->stderrText();
-  EXPECT_EQ(processesMentioning(url).size(), 4u);  // the script and its three programs
+  EXPECT_EQ(processesMentioning(url).size(), 5u);  // the script and its four programs
   demo->signal(SIGINT);
   EXPECT_EQ(demo->waitForExit(10s), 130);
   EXPECT_THAT(demo->stdoutText(), HasSubstr("lcmtf-urdf-publisher: stopped after "));

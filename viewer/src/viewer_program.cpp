@@ -150,6 +150,8 @@ int runViewer(const ViewerOptions& options, std::ostream& out, std::ostream& err
     err << kProgram << ": " << message << std::endl;
   };
 
+  const std::unique_ptr<lcm::LCM> lcm = programs::openLcmOrReport(options.lcm_url, kProgram, err);
+  if (!lcm) return programs::kExitBadArguments;
   ServedFiles page_files;
   try {
     page_files = pageFiles(
@@ -159,8 +161,6 @@ int runViewer(const ViewerOptions& options, std::ostream& out, std::ostream& err
     report(e.what());
     return programs::kExitFailure;
   }
-  const std::unique_ptr<lcm::LCM> lcm = programs::openLcmOrReport(options.lcm_url, kProgram, err);
-  if (!lcm) return programs::kExitBadArguments;
 
   Buffer buffer(seconds(options.cache_time_s));
   buffer.setErrorReporter(nullptr);
