@@ -66,6 +66,8 @@ export class Timeline {
     } else {
       const ago = Math.max(0, (newest - store.time) / 1e6);
       text = `paused, ${ago.toFixed(1)} s ago · ${formatClock(store.time)}`;
+      // The buffer has let go of that time: frames moved by then are no longer drawn.
+      if (store.time < oldest) text += ' (older than the history)';
     }
     if (this.label.textContent !== text) this.label.textContent = text;
     this.label.classList.toggle('paused', known && !store.live);
