@@ -17,7 +17,6 @@ import math
 import os
 import statistics
 import sys
-import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -136,7 +135,7 @@ def run_workload(name, args, chromium, port):
             view_frames = ["pelvis", "left_ankle_roll_link", "torso_link", "right_wrist_yaw_link"]
             publisher_args = ["--sweep", "--rate", "500"]
         else:
-            urdf = os.path.join(tempfile.mkdtemp(prefix="lcmtf-viewer-bench-"), "tree1000.urdf")
+            urdf = os.path.join(programs.log_dir, "tree1000.urdf")
             with open(urdf, "w", encoding="utf-8") as file:
                 file.write(tree_urdf(1000, 10))
             frames_expected = 1000

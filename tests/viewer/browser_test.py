@@ -9,6 +9,7 @@ Cases (--case):
   panda_meshes     the Panda with its COLLADA meshes: all load, none fail
   panda_stl_meshes the Panda drawn with its STL (collision) meshes
   missing_meshes   the G1, whose meshes are missing: warnings, and every frame still drawn
+  broken_meshes    mesh files that are there but unreadable: a warning each, frames drawn
 Exit status: 0 passed, 1 failed, 77 skipped (no Chromium, or a robot file is missing).
 """
 import argparse
@@ -367,6 +368,42 @@ def case_missing_meshes(args, browser, programs):
     check_no_page_errors(page)
 
 
+def case_broken_meshes(args, browser, programs):
+    """Mesh files that are found but cannot be read: each is a warning, the frames are drawn."""
+    package = os.path.join(programs.log_dir, "packages", "broken")
+    os.makedirs(package)
+    with open(os.path.join(package, "short.stl"), "wb") as file:
+        file.write(b"solid x\n")
+    with open(os.path.join(package, "noise.stl"), "wb") as file:
+        file.write(bytes(range(256)) * 4)
+    with open(os.path.join(package, "text.dae"), "w", encoding="utf-8") as file:
+        file.write("this is not XML")
+    urdf = os.path.join(programs.log_dir, "broken.urdf")
+    links = ["base", "a", "b", "c"]
+    with open(urdf, "w", encoding="utf-8") as file:
+        file.write('<robot name="broken"><link name="base"><visual><geometry><box size="0.2 0.2 0.2"/>'
+                   "</geometry></visual></link>")
+        for link, mesh in zip(links[1:], ["short.stl", "noise.stl", "text.dae"]):
+            file.write(f'<link name="{link}"><visual><geometry><mesh filename="package://broken/{mesh}"/>'
+                       f'</geometry></visual></link><joint name="{link}_joint" type="fixed">'
+                       f'<parent link="base"/><child link="{link}"/><origin xyz="0.3 0 0"/></joint>')
+        file.write("</robot>")
+    programs.start("lcmtf-urdf-publisher", "--lcm-url", lcm_url(args.lcm_port), urdf)
+    _, base = programs.start_viewer(args.lcm_port, "--package-path",
+                                    os.path.join(programs.log_dir, "packages"))
+    page = open_viewer(browser, base)
+    page.wait_for("lcmtfViewer.robotLoaded && lcmtfViewer.meshesPending === 0 &&"
+                  " lcmtfViewer.meshesFailed + lcmtfViewer.meshesLoaded === 3", 30,
+                  what="the three meshes tried")
+    page.wait_for(f"lcmtfViewer.framesDrawn >= {len(links)}", 20, what="every frame drawn")
+    result = stats(page)
+    print(f"meshes failed {result['meshesFailed']}: {result['warnings']}")
+    check(result["meshesFailed"] == 3, f"{result['meshesFailed']} meshes failed, not 3")
+    for mesh in ["short.stl", "noise.stl", "text.dae"]:
+        check(any(mesh in warning for warning in result["warnings"]), f"no warning names {mesh}")
+    check_no_page_errors(page)
+
+
 CASES = {
     "demo": case_demo,
     "joint_sliders": case_joint_sliders,
@@ -374,6 +411,7 @@ CASES = {
     "panda_meshes": case_panda_meshes,
     "panda_stl_meshes": case_panda_stl_meshes,
     "missing_meshes": case_missing_meshes,
+    "broken_meshes": case_broken_meshes,
 }
 
 
@@ -409,6 +447,7 @@ def main():
                 print(f"--- {name}: SKIPPED: {reason}")
             except Exception:  # pylint: disable=broad-except
                 failed += 1
+                programs.keep_logs = True
                 traceback.print_exc(file=sys.stdout)
                 for process in programs.running:
                     print(f"--- output of {process.name}:\n{programs.log(process)[-2000:]}")

@@ -303,6 +303,7 @@ def main():
             return 0
         except Exception as error:  # pylint: disable=broad-except
             import traceback
+            programs.keep_logs = True
             traceback.print_exc(file=sys.stdout)
             for process in programs.running:
                 print(f"--- output of {process.name}:\n{programs.log(process)[-3000:]}")

@@ -1,6 +1,7 @@
 """Starts lcmtf's programs for the viewer's tests and benchmark, and always ends them."""
 import os
 import re
+import shutil
 import signal
 import subprocess
 import tempfile
@@ -19,12 +20,17 @@ class Programs:
         self.bin_dir = bin_dir
         self.running = []
         self.log_dir = tempfile.mkdtemp(prefix="lcmtf-viewer-test-")
+        self.keep_logs = False  # set on failure: the folder stays for a look
 
     def __enter__(self):
         return self
 
     def __exit__(self, *exc):
         self.stop_all()
+        if self.keep_logs or exc[0] is not None:
+            print(f"logs kept in {self.log_dir}")
+        else:
+            shutil.rmtree(self.log_dir, ignore_errors=True)
         return False
 
     def start(self, program, *args):

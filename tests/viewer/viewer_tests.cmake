@@ -17,7 +17,8 @@ if(LCMTF_SYSTEM_PYTHON AND TARGET lcmtf-viewer AND TARGET lcmtf-urdf-publisher
     --shared-urdf "${PROJECT_SOURCE_DIR}/../shared/urdf")
 
   set(viewer_lcm_port 17691)
-  foreach(case IN ITEMS demo joint_sliders reconnect panda_meshes panda_stl_meshes missing_meshes)
+  foreach(case IN ITEMS demo joint_sliders reconnect panda_meshes panda_stl_meshes missing_meshes
+                       broken_meshes)
     set(case_args --case ${case})
     if(case STREQUAL "demo")
       # The picture of the demo robot that docs/viewer.png is taken from.
@@ -35,7 +36,7 @@ if(LCMTF_SYSTEM_PYTHON AND TARGET lcmtf-viewer AND TARGET lcmtf-urdf-publisher
 
   set_tests_properties(viewer_page_demo viewer_page_joint_sliders viewer_page_reconnect
     viewer_page_panda_meshes viewer_page_panda_stl_meshes viewer_page_missing_meshes
-    viewer_hostile_input PROPERTIES
+    viewer_page_broken_meshes viewer_hostile_input PROPERTIES
     TIMEOUT 180 SKIP_RETURN_CODE 77
     # One Chromium drawing with SwiftShader at a time keeps their timing honest.
     RESOURCE_LOCK lcmtf_viewer_browser)

@@ -28,13 +28,19 @@ async function fetchMesh(url, format) {
   const response = await fetch(url);
   if (!response.ok) throw new Error(`HTTP ${response.status} ${response.statusText}`.trim());
   if (format === 'stl') {
-    const geometry = new STLLoader().parse(await response.arrayBuffer());
+    let geometry;
+    try {
+      geometry = new STLLoader().parse(await response.arrayBuffer());
+    } catch (error) {
+      throw new Error(`not an STL file three.js can read (${error.message})`);
+    }
     const position = geometry.getAttribute('position');
     if (!position || position.count === 0) throw new Error('the STL file holds no triangles');
     return { format, geometry };
   }
   if (format === 'dae') {
     const text = await response.text();
+    if (!text.includes('<COLLADA')) throw new Error('not a COLLADA file');
     const baseUrl = url.slice(0, url.lastIndexOf('/') + 1);
     const collada = new ColladaLoader().parse(text, baseUrl);
     if (!collada || !collada.scene) throw new Error('not a COLLADA file three.js can read');
