@@ -9,7 +9,8 @@ Cases (--case):
   panda_meshes     the Panda with its COLLADA meshes: all load, none fail
   panda_stl_meshes the Panda drawn with its STL (collision) meshes
   missing_meshes   the G1, whose meshes are missing: warnings, and every frame still drawn
-  broken_meshes    mesh files that are there but unreadable: a warning each, frames drawn
+  broken_meshes    mesh files that are there but unreadable: a warning each, frames drawn;
+                   a tree not connected to the robot is listed, not drawn
 Exit status: 0 passed, 1 failed, 77 skipped (no Chromium, or a robot file is missing).
 """
 import argparse
@@ -273,6 +274,9 @@ def case_joint_sliders(args, browser, programs):
     time.sleep(1.0)
     x = page.evaluate("lcmtfViewer.pose('base_x_link')")
     check(x is None or abs(x[0] + 0.7) < 1e-3, f"a slider moved the robot while off: {x}")
+    # With no joint states any more, the moving frames go stale (after 1 s) and are greyed.
+    page.wait_for("document.querySelector('#frame-tree li[data-frame=\"base_x_link\"]')"
+                  ".classList.contains('stale')", 10, what="base_x_link greyed as stale")
     check_no_page_errors(page)
 
 
@@ -389,9 +393,20 @@ def case_broken_meshes(args, browser, programs):
                        f'<parent link="base"/><child link="{link}"/><origin xyz="0.3 0 0"/></joint>')
         file.write("</robot>")
     programs.start("lcmtf-urdf-publisher", "--lcm-url", lcm_url(args.lcm_port), urdf)
+    # A tree of its own, not connected to the robot: listed, not drawn.
+    island = os.path.isfile(os.path.join(args.bin_dir, "lcmtf-static-publisher"))
+    if island:
+        programs.start("lcmtf-static-publisher", "--lcm-url", lcm_url(args.lcm_port),
+                       "1", "0", "0", "0", "0", "0", "island_map", "island")
     _, base = programs.start_viewer(args.lcm_port, "--package-path",
                                     os.path.join(programs.log_dir, "packages"))
     page = open_viewer(browser, base)
+    if island:
+        page.wait_for("document.querySelector('#frame-tree li[data-frame=\"island\"]') !== null &&"
+                      " document.getElementById('unconnected').textContent.includes('island_map')",
+                      20, what="the unconnected tree listed")
+        check(page.evaluate("lcmtfViewer.pose('island')") is None, "the unconnected frame is drawn")
+        print("the unconnected tree island_map is listed, not drawn")
     page.wait_for("lcmtfViewer.robotLoaded && lcmtfViewer.meshesPending === 0 &&"
                   " lcmtfViewer.meshesFailed + lcmtfViewer.meshesLoaded === 3", 30,
                   what="the three meshes tried")
