@@ -15,3 +15,17 @@ execute_process(COMMAND "${PREFIX}/${BINDIR}/lcmtf-joint-publisher" --help
 if(NOT result EQUAL 0 OR NOT output MATCHES "--sweep")
   message(FATAL_ERROR "lcmtf-joint-publisher --help: ${result}\n${output}${errors}")
 endif()
+# The viewer serves its page from the prefix's share folder, with the robot from the prefix.
+if(EXISTS "${PREFIX}/${BINDIR}/lcmtf-viewer")
+  if(NOT EXISTS "${PREFIX}/${DATADIR}/lcmtf/viewer/index.html"
+     OR NOT EXISTS "${PREFIX}/${DATADIR}/lcmtf/viewer/js/main.js")
+    message(FATAL_ERROR "not installed: the viewer's page in ${PREFIX}/${DATADIR}/lcmtf/viewer")
+  endif()
+  execute_process(COMMAND "${PREFIX}/${BINDIR}/lcmtf-viewer" --port 0 --duration 0.5
+      --lcm-url "udpm://239.255.76.67:17689?ttl=0" --urdf "${robot}"
+    RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE errors)
+  if(NOT result EQUAL 0 OR NOT output MATCHES "lcmtf-viewer: open http://127.0.0.1:[0-9]+/"
+     OR NOT errors MATCHES "robot 'mobile_manipulator' from ")
+    message(FATAL_ERROR "lcmtf-viewer: ${result}\n${output}${errors}")
+  endif()
+endif()
