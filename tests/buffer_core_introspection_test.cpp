@@ -59,6 +59,11 @@ TEST_F(BufferCoreIntrospection, DescribeEdgesGivesEachEdgesParentSenderRateAndHi
   EXPECT_TRUE(edges[1].is_static);
   EXPECT_EQ(edges[1].rate_hz, 0.0);
   EXPECT_EQ(edges[1].newest, TimePoint());
+  EXPECT_EQ(edges[0].authority_conflicts, 0u);
+  put(buffer_, "world", "base", at(1.5), pose({0, 0, 0}, 0, kZ), false, "other_driver");
+  const EdgeDescription taken_over = buffer_.describeEdges()[0];
+  EXPECT_EQ(taken_over.authority, "other_driver");
+  EXPECT_EQ(taken_over.authority_conflicts, 1u);
 }
 
 TEST_F(BufferCoreIntrospection, AllFrameNamesListsEveryFrameOnceInOrderOfAppearance) {

@@ -10,26 +10,29 @@ namespace lcmtf {
 
 namespace {
 
-struct EdgeSummary {
-  bool is_static = false;
-  double rate_hz = 0.0;
-  std::int64_t oldest = 0;
-  std::int64_t newest = 0;
-  std::size_t samples = 0;
-};
-
-EdgeSummary summarize(const detail::TimeCache& cache) {
-  EdgeSummary summary;
-  summary.is_static = cache.isStatic();
-  summary.samples = cache.size();
-  if (summary.is_static || cache.empty()) return summary;
-  summary.oldest = cache.oldestStamp();
-  summary.newest = cache.newestStamp();
-  if (summary.samples > 1 && summary.newest > summary.oldest) {
-    summary.rate_hz = static_cast<double>(summary.samples - 1) /
-                      toSeconds(Duration(summary.newest - summary.oldest));
+// Every edge held, in the order its child appeared; the caller holds the buffer's lock.
+std::vector<EdgeDescription> describeEdgesOf(const FrameTable& frames,
+                                             const detail::AuthorityTable& authorities) {
+  std::vector<EdgeDescription> edges;
+  for (std::size_t id = 1; id < frames.size(); ++id) {
+    const FrameRecord& frame = frames[id];
+    const detail::TimeCache& cache = frame.cache;
+    if (cache.empty()) continue;
+    EdgeDescription& edge = edges.emplace_back();
+    edge.child = frame.name;
+    edge.parent = frames[cache.newestParent()].name;
+    if (frame.authority) edge.authority = authorities.name(frame.authority);
+    edge.is_static = cache.isStatic();
+    edge.samples = cache.size();
+    edge.authority_conflicts = frame.authority_conflicts;
+    if (edge.is_static) continue;
+    edge.oldest = fromUtime(cache.oldestStamp());
+    edge.newest = fromUtime(cache.newestStamp());
+    if (edge.samples > 1 && edge.newest > edge.oldest) {
+      edge.rate_hz = static_cast<double>(edge.samples - 1) / toSeconds(edge.newest - edge.oldest);
+    }
   }
-  return summary;
+  return edges;
 }
 
 std::string yamlQuoted(std::string_view text) {
@@ -51,42 +54,23 @@ std::string fixed(double value, int digits) {
 
 std::vector<EdgeDescription> BufferCore::describeEdges() const {
   std::shared_lock<detail::ReadMostlyLock> lock(impl_->lock_);
-  std::vector<EdgeDescription> edges;
-  for (std::size_t id = 1; id < impl_->frames_.size(); ++id) {
-    const FrameRecord& frame = impl_->frames_[id];
-    if (frame.cache.empty()) continue;
-    const EdgeSummary summary = summarize(frame.cache);
-    EdgeDescription& edge = edges.emplace_back();
-    edge.child = frame.name;
-    edge.parent = impl_->nameOf(frame.cache.newestParent());
-    if (frame.authority) edge.authority = impl_->authorities_.name(frame.authority);
-    edge.is_static = summary.is_static;
-    edge.rate_hz = summary.rate_hz;
-    edge.samples = summary.samples;
-    edge.oldest = fromUtime(summary.oldest);
-    edge.newest = fromUtime(summary.newest);
-  }
-  return edges;
+  return describeEdgesOf(impl_->frames_, impl_->authorities_);
 }
 
 std::string BufferCore::allFramesAsYaml() const {
   std::shared_lock<detail::ReadMostlyLock> lock(impl_->lock_);
   std::ostringstream yaml;
-  for (std::size_t id = 1; id < impl_->frames_.size(); ++id) {
-    const FrameRecord& frame = impl_->frames_[id];
-    if (frame.cache.empty()) continue;
-    const EdgeSummary edge = summarize(frame.cache);
-    yaml << yamlQuoted(frame.name) << ":\n"
-         << "  parent: " << yamlQuoted(impl_->nameOf(frame.cache.newestParent())) << '\n'
-         << "  authority: "
-         << yamlQuoted(frame.authority ? impl_->authorities_.name(frame.authority) : "") << '\n'
+  for (const EdgeDescription& edge : describeEdgesOf(impl_->frames_, impl_->authorities_)) {
+    yaml << yamlQuoted(edge.child) << ":\n"
+         << "  parent: " << yamlQuoted(edge.parent) << '\n'
+         << "  authority: " << yamlQuoted(edge.authority) << '\n'
          << "  static: " << (edge.is_static ? "true" : "false") << '\n'
          << "  rate: " << fixed(edge.rate_hz, 3) << '\n'
          << "  samples: " << edge.samples << '\n'
-         << "  most_recent_transform: " << toString(fromUtime(edge.newest)) << '\n'
-         << "  oldest_transform: " << toString(fromUtime(edge.oldest)) << '\n'
-         << "  buffer_length: " << fixed(toSeconds(Duration(edge.newest - edge.oldest)), 6) << '\n'
-         << "  authority_conflicts: " << frame.authority_conflicts << '\n';
+         << "  most_recent_transform: " << toString(edge.newest) << '\n'
+         << "  oldest_transform: " << toString(edge.oldest) << '\n'
+         << "  buffer_length: " << fixed(toSeconds(edge.newest - edge.oldest), 6) << '\n'
+         << "  authority_conflicts: " << edge.authority_conflicts << '\n';
   }
   return yaml.str();
 }
@@ -99,24 +83,17 @@ std::string BufferCore::allFramesAsDot() const {
     const FrameRecord& frame = impl_->frames_[id];
     dot << "  " << dotQuoted(frame.name) << ";\n";
   }
-  for (std::size_t id = 1; id < impl_->frames_.size(); ++id) {
-    const FrameRecord& frame = impl_->frames_[id];
-    if (frame.cache.empty()) continue;
-    const EdgeSummary edge = summarize(frame.cache);
-    const std::string authority =
-        frame.authority ? impl_->authorities_.name(frame.authority) : std::string();
-    std::string label = "Broadcaster: " + authority + "\n";
+  for (const EdgeDescription& edge : describeEdgesOf(impl_->frames_, impl_->authorities_)) {
+    std::string label = "Broadcaster: " + edge.authority + "\n";
     if (edge.is_static) {
       label += "static";
     } else {
       label += "Average rate: " + fixed(edge.rate_hz, 3) +
-               " Hz\nMost recent transform: " + toString(fromUtime(edge.newest)) +
-               "\nBuffer length: " + fixed(toSeconds(Duration(edge.newest - edge.oldest)), 3) +
-               " s";
+               " Hz\nMost recent transform: " + toString(edge.newest) +
+               "\nBuffer length: " + fixed(toSeconds(edge.newest - edge.oldest), 3) + " s";
     }
-    dot << "  " << dotQuoted(impl_->nameOf(frame.cache.newestParent())) << " -> "
-        << dotQuoted(frame.name) << " [label=" << dotQuoted(label)
-        << (edge.is_static ? ", style=dashed" : "") << "];\n";
+    dot << "  " << dotQuoted(edge.parent) << " -> " << dotQuoted(edge.child)
+        << " [label=" << dotQuoted(label) << (edge.is_static ? ", style=dashed" : "") << "];\n";
   }
   dot << "}\n";
   return dot.str();

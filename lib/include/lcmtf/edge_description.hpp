@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include "lcmtf/time.hpp"
@@ -17,6 +18,7 @@ struct EdgeDescription {
   std::size_t samples = 0;
   TimePoint oldest;  ///< stamps held; both zero for a static edge
   TimePoint newest;
+  std::uint64_t authority_conflicts = 0;  ///< times another sender than the last one set it
 };
 
 }  // namespace lcmtf
