@@ -37,6 +37,8 @@ TEST_F(SceneSnapshotTest, ForestKnowsParentsRootsAndTheDynamicHistory) {
   EXPECT_EQ(trees.edges.size(), 3u);
   EXPECT_EQ(trees.parent_of.at("camera"), "base");
   EXPECT_EQ(trees.roots, (std::vector<std::string>{"map2", "odom"}));
+  EXPECT_EQ(trees.trees.at("odom"), (std::vector<std::string>{"odom", "base", "camera"}));
+  EXPECT_EQ(trees.trees.at("map2"), (std::vector<std::string>{"map2", "beacon"}));
   EXPECT_EQ(trees.oldest, at(1));
   EXPECT_EQ(trees.newest, at(2));
   EXPECT_EQ(rootOf(trees, "camera"), "odom");

@@ -24,6 +24,11 @@ FrameForest readForest(const BufferCore& buffer, TimePoint now) {
   for (const std::string& parent : parents) {
     if (!forest.parent_of.count(parent)) forest.roots.push_back(parent);
   }
+  for (const std::string& root : forest.roots) forest.trees[root].push_back(root);
+  for (const auto& [child, parent] : forest.parent_of) {
+    forest.trees[rootOf(forest, child)].push_back(child);
+  }
+  for (auto& [root, frames] : forest.trees) std::sort(frames.begin() + 1, frames.end());
   return forest;
 }
 
@@ -40,16 +45,6 @@ std::string rootOf(const FrameForest& forest, const std::string& frame) {
 
 namespace {
 
-// Each tree's frames, by root, the root first.
-std::map<std::string, std::vector<std::string>> framesByRoot(const FrameForest& forest) {
-  std::map<std::string, std::vector<std::string>> trees;
-  for (const std::string& root : forest.roots) trees[root].push_back(root);
-  for (const auto& [child, parent] : forest.parent_of)
-    trees[rootOf(forest, child)].push_back(child);
-  for (auto& [root, frames] : trees) std::sort(frames.begin() + 1, frames.end());
-  return trees;
-}
-
 FramePose toPose(const Transform& transform) {
   const Eigen::Vector3d& t = transform.translation;
   const Eigen::Quaterniond& q = transform.rotation;
@@ -58,15 +53,16 @@ FramePose toPose(const Transform& transform) {
 
 }  // namespace
 
+bool knowsFrame(const FrameForest& forest, const std::string& frame) {
+  return forest.parent_of.count(frame) ||
+         std::binary_search(forest.roots.begin(), forest.roots.end(), frame);
+}
+
 std::string automaticFixedFrame(const FrameForest& forest, const std::string& preferred) {
-  if (!preferred.empty() &&
-      (forest.parent_of.count(preferred) ||
-       std::binary_search(forest.roots.begin(), forest.roots.end(), preferred))) {
-    return preferred;
-  }
+  if (!preferred.empty() && knowsFrame(forest, preferred)) return preferred;
   std::string largest;
   std::size_t most = 0;
-  for (const auto& [root, frames] : framesByRoot(forest)) {
+  for (const auto& [root, frames] : forest.trees) {
     if (frames.size() > most) {
       most = frames.size();
       largest = root;
@@ -83,11 +79,8 @@ SceneSnapshot takeSnapshot(const BufferCore& buffer, const FrameForest& forest,
   scene.live = !paused_at.has_value();
   scene.time = paused_at.value_or(forest.newest);
   const std::string fixed_root = rootOf(forest, fixed_frame);
-  const bool fixed_known =
-      !fixed_frame.empty() &&
-      (forest.parent_of.count(fixed_frame) ||
-       std::binary_search(forest.roots.begin(), forest.roots.end(), fixed_frame));
-  for (auto& [root, frames] : framesByRoot(forest)) {
+  const bool fixed_known = !fixed_frame.empty() && knowsFrame(forest, fixed_frame);
+  for (const auto& [root, frames] : forest.trees) {
     if (!fixed_known || root != fixed_root) {
       scene.unconnected.push_back(UnconnectedTree{root, frames});
       continue;

@@ -29,7 +29,9 @@ struct FrameForest {
   std::vector<EdgeDescription> edges;
   std::map<std::string, std::string> parent_of;  ///< child -> parent
   std::vector<std::string> roots;                ///< frames with no parent, sorted
-  TimePoint oldest;                              ///< over dynamic edges; zero when none
+  /// Each tree's frames by its root: the root first, then the others sorted.
+  std::map<std::string, std::vector<std::string>> trees;
+  TimePoint oldest;  ///< over dynamic edges; zero when none
   TimePoint newest;
   TimePoint now;  ///< when it was read
 };
@@ -39,6 +41,8 @@ FrameForest readForest(const BufferCore& buffer, TimePoint now);
 
 /// The root of the tree `frame` belongs to (itself when it has no parent).
 std::string rootOf(const FrameForest& forest, const std::string& frame);
+/// Whether `frame` is in one of the trees.
+bool knowsFrame(const FrameForest& forest, const std::string& frame);
 
 /// The fixed frame to draw in when the page has not chosen one: `preferred` when the buffer
 /// knows it, else the root of the largest tree; "" when the buffer is empty.
