@@ -39,10 +39,6 @@ constexpr const char* kExamples =
     "  lcmtf-viewer --bind 0.0.0.0 --port 9000     share it with every machine that can reach "
     "this one";
 
-Duration seconds(double value) {
-  return std::chrono::duration_cast<Duration>(std::chrono::duration<double>(value));
-}
-
 std::string pageUrl(const std::string& bind_address, std::uint16_t port) {
   std::string host = bind_address;
   if (host == "0.0.0.0" || host == "::") {
@@ -162,7 +158,7 @@ int runViewer(const ViewerOptions& options, std::ostream& out, std::ostream& err
     return programs::kExitFailure;
   }
 
-  Buffer buffer(seconds(options.cache_time_s));
+  Buffer buffer(secondsToDuration(options.cache_time_s));
   buffer.setErrorReporter(nullptr);
   ListenerOptions listening;
   listening.lcm_url = options.lcm_url;
@@ -177,7 +173,7 @@ int runViewer(const ViewerOptions& options, std::ostream& out, std::ostream& err
   settings.version = programs::toolsVersion();
   settings.fixed_frame = options.fixed_frame;
   settings.update_hz = options.update_hz;
-  settings.stale_after = seconds(options.stale_after_s);
+  settings.stale_after = secondsToDuration(options.stale_after_s);
   settings.joint_states_channel = options.joint_states_channel;
   settings.authority = authority;
   ViewerHub hub(buffer, std::move(page_files), settings,
@@ -196,8 +192,7 @@ int runViewer(const ViewerOptions& options, std::ostream& out, std::ostream& err
     return programs::kExitFailure;
   }
   using std::chrono::microseconds;
-  server->every(microseconds(static_cast<std::int64_t>(1e6 / options.update_hz)),
-                [&hub] { hub.sendScenes(); });
+  server->every(secondsToDuration(1.0 / options.update_hz), [&hub] { hub.sendScenes(); });
   server->every(std::chrono::milliseconds(500), [&hub] { hub.sendTree(); });
   server->every(microseconds(1'000'000 / 30), [&hub] { hub.publishJoints(); });
 
@@ -241,7 +236,7 @@ int runViewer(const ViewerOptions& options, std::ostream& out, std::ostream& err
 
   const TimePoint started = now();
   while (!stop.load()) {
-    if (options.duration_s > 0 && now() - started >= seconds(options.duration_s)) break;
+    if (options.duration_s > 0 && now() - started >= secondsToDuration(options.duration_s)) break;
     robot_source.askIfWaiting(now());
     if (!programs::handleLcmFor(*lcm, std::chrono::milliseconds(100))) {
       report("LCM stopped receiving");
