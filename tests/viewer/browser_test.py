@@ -28,7 +28,7 @@ try:
 except ImportError as missing:  # Debian's python3-websocket
     print(f"SKIPPED: {missing}")
     sys.exit(77)
-from viewer_processes import Programs, lcm_url  # noqa: E402
+from viewer_processes import Programs, add_test_arguments, lcm_url  # noqa: E402
 
 SKIP = 77
 WIDTH, HEIGHT = 1280, 800
@@ -433,10 +433,7 @@ CASES = {
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--bin-dir", required=True, help="folder of lcmtf's programs")
-    parser.add_argument("--source-dir", required=True, help="lcmtf's source tree")
-    parser.add_argument("--shared-urdf", required=True, help="folder of the shared robot files")
-    parser.add_argument("--lcm-port", type=int, required=True, help="udpm port of this test's own")
+    add_test_arguments(parser)
     parser.add_argument("--case", choices=sorted(CASES), action="append",
                         help="the case to run (repeatable; default: all)")
     parser.add_argument("--screenshot", help="where the demo case saves a picture of the page")

@@ -21,7 +21,7 @@ try:
 except ImportError as missing:  # Debian's python3-websocket
     print(f"SKIPPED: {missing}")
     sys.exit(77)
-from viewer_processes import Programs  # noqa: E402
+from viewer_processes import Programs, add_test_arguments  # noqa: E402
 
 TRAVERSALS = [
     "/../etc/passwd",
@@ -271,10 +271,7 @@ def check_websocket(port):
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--bin-dir", required=True, help="folder of lcmtf's programs")
-    parser.add_argument("--source-dir", required=True, help="lcmtf's source tree")
-    parser.add_argument("--shared-urdf", required=True, help="folder of the shared robot files")
-    parser.add_argument("--lcm-port", type=int, required=True, help="udpm port of this test's own")
+    add_test_arguments(parser)
     args = parser.parse_args()
 
     urdf = os.path.join(args.source_dir, "examples", "mobile_manipulator.urdf")

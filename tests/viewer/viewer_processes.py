@@ -8,6 +8,14 @@ import tempfile
 import time
 
 
+def add_test_arguments(parser):
+    """The arguments ctest gives every viewer test script."""
+    parser.add_argument("--bin-dir", required=True, help="folder of lcmtf's programs")
+    parser.add_argument("--source-dir", required=True, help="lcmtf's source tree")
+    parser.add_argument("--shared-urdf", required=True, help="folder of the shared robot files")
+    parser.add_argument("--lcm-port", type=int, required=True, help="udpm port of this test's own")
+
+
 def lcm_url(port):
     """A udpm URL that stays on this machine, on a port of the caller's own."""
     return f"udpm://239.255.76.67:{port}?ttl=0"
