@@ -131,5 +131,50 @@ TEST(BufferCoreConcurrency, ReadersWritersClearAndRequestsRunTogether) {
   }
 }
 
+// Writers with no pause between inserts contend for their turns, so that many of them pass
+// through the kernel, with a reader waiting on each of them now and then.
+TEST(BufferCoreConcurrency, WritersContendingForTheirTurnsLoseNoSample) {
+  BufferCore buffer(std::chrono::seconds(100));
+  const int samples_per_writer = lcmtf_test::scaledCount(20000, 500);
+  constexpr int kWriters = 4;
+  std::atomic<bool> writing{true};
+  std::atomic<std::uint64_t> bad_answers{0};
+  std::vector<std::thread> writers;
+  for (int writer = 0; writer < kWriters; ++writer) {
+    writers.emplace_back([&buffer, samples_per_writer, writer] {
+      const std::string child = "arm_" + std::to_string(writer);
+      for (int i = 1; i <= samples_per_writer; ++i) {
+        buffer.setTransform(moving("base", child, i * kStepMicros), "writer_" + child);
+      }
+    });
+  }
+  std::thread reader([&] {
+    std::int64_t utime = kStepMicros;
+    while (writing.load()) {
+      try {
+        const TransformStamped t = buffer.lookupTransform("arm_0", "arm_1", fromUtime(utime));
+        const bool valid = std::abs(t.transform.rotation.norm() - 1.0) < 1e-9 &&
+                           t.transform.translation.allFinite();
+        if (!valid) bad_answers.fetch_add(1);
+      } catch (const TransformException&) {
+      }
+      utime = utime % (samples_per_writer * kStepMicros) + kStepMicros;
+    }
+  });
+  for (std::thread& writer : writers) writer.join();
+  writing.store(false);
+  reader.join();
+
+  EXPECT_EQ(buffer.statistics().inserted,
+            static_cast<std::uint64_t>(kWriters) * static_cast<std::uint64_t>(samples_per_writer));
+  for (int writer = 0; writer < kWriters; ++writer) {
+    const std::string child = "arm_" + std::to_string(writer);
+    EXPECT_EQ(toUtime(buffer.lookupTransform("base", child, kLatestTime).stamp),
+              samples_per_writer * kStepMicros)
+        << child;
+  }
+  EXPECT_EQ(bad_answers.load(), 0u);
+}
+
 }  // namespace
 }  // namespace lcmtf

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <shared_mutex>
 #include <stdexcept>
 
 #include "buffer_core_impl.hpp"
@@ -13,7 +12,7 @@
 
 namespace lcmtf {
 
-using SharedLock = std::shared_lock<detail::ReadMostlyLock>;
+using SharedLock = detail::ReadMostlyLock::SharedHold;
 using ExclusiveLock = std::unique_lock<detail::ReadMostlyLock>;
 
 const char* describe(InsertRejection kind) {

@@ -1,6 +1,5 @@
 // Transformable requests: callbacks for when a lookup becomes possible, or never will.
 #include <optional>
-#include <shared_mutex>
 
 #include "buffer_core_impl.hpp"
 
@@ -32,7 +31,7 @@ void BufferCore::cancelTransformableRequest(TransformableRequestHandle handle) c
 std::vector<std::function<void()>> BufferCore::Impl::collectDecidedRequests() {
   std::vector<std::function<void()>> decided;
   std::lock_guard<std::mutex> guard(requests_mutex_);
-  std::shared_lock<detail::ReadMostlyLock> lock(lock_);
+  detail::ReadMostlyLock::SharedHold lock(lock_);
   for (auto request = requests_.begin(); request != requests_.end();) {
     TransformableRequest& r = request->second;
     if (r.target_id == kNoFrame) r.target_id = idOf(stripLeadingSlash(r.target));

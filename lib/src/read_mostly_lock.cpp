@@ -7,7 +7,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <thread>
 
 namespace lcmtf::detail {
 
@@ -57,41 +59,56 @@ void wakeOne(const std::atomic<std::uint32_t>& word) {
           nullptr, 0);
 }
 
-// Each thread's slot, handed out in turn. The thread-local takes the general dynamic model,
-// not initial-exec, so the library can be loaded by dlopen (as a Python extension is).
+// What a thread brings to every lock: its slot, handed out in turn, and its kernel thread id
+// for the writers' futex, both looked up once. The thread-local takes the general dynamic
+// model, not initial-exec, so the library can be loaded by dlopen (as a Python extension is).
 constexpr std::size_t kNoSlot = static_cast<std::size_t>(-1);
-thread_local std::size_t thread_slot = kNoSlot;
+struct ThreadIdentity {
+  std::size_t slot = kNoSlot;
+  std::uint32_t id = 0;
+};
+thread_local ThreadIdentity identity;
 // How many threads have taken a slot, so that a writer in a process with few threads checks
 // only the slots they use. A thread counts itself before it first enters a slot, both in the
 // total order of seq_cst operations that lock() reads this in.
 std::atomic<std::size_t> threads_with_slots{0};
 
 std::size_t threadSlot() {
-  if (thread_slot == kNoSlot) {
-    thread_slot = threads_with_slots.fetch_add(1, std::memory_order_seq_cst);
+  if (identity.slot == kNoSlot) {
+    identity.slot = threads_with_slots.fetch_add(1, std::memory_order_seq_cst);
   }
-  return thread_slot;
+  return identity.slot;
 }
+
+// A child of fork() runs as a new thread in the forking thread's place: it looks its id up
+// again.
+void forgetThreadId() { identity.id = 0; }
+const int fork_handler_registered = pthread_atfork(nullptr, nullptr, forgetThreadId);
+
+std::uint32_t threadId() {
+  if (identity.id == 0) identity.id = static_cast<std::uint32_t>(syscall(SYS_gettid));
+  return identity.id;
+}
+
+// The owner word changes hands in the kernel when there are waiters, out of the sight of the
+// thread sanitizer: these tell it that whatever one owner wrote, the next may read.
+#if defined(__SANITIZE_THREAD__)
+extern "C" void __tsan_acquire(void* address);
+extern "C" void __tsan_release(void* address);
+void noteTaken(const void* word) { __tsan_acquire(const_cast<void*>(word)); }
+void noteReleasing(const void* word) { __tsan_release(const_cast<void*>(word)); }
+#else
+void noteTaken(const void*) {}
+void noteReleasing(const void*) {}
+#endif
 
 }  // namespace
-
-ReadMostlyLock::ReadMostlyLock() {
-  pthread_mutexattr_t attributes;
-  pthread_mutexattr_init(&attributes);
-  // Where the system has no priority inheritance, an ordinary mutex still never spins.
-  pthread_mutexattr_setprotocol(&attributes, PTHREAD_PRIO_INHERIT);
-  if (pthread_mutex_init(&writers_, &attributes) != 0) pthread_mutex_init(&writers_, nullptr);
-  pthread_mutexattr_destroy(&attributes);
-}
-
-ReadMostlyLock::~ReadMostlyLock() { pthread_mutex_destroy(&writers_); }
 
 ReadMostlyLock::Slot& ReadMostlyLock::mySlot() const { return slots_[threadSlot() % kSlots]; }
 
 // Reader and writer each announce themselves, then look for the other, both in the single
 // total order of seq_cst operations: at least one of them sees the other and backs off.
-void ReadMostlyLock::lock_shared() const {
-  Slot& slot = mySlot();
+void ReadMostlyLock::enter(Slot& slot) const {
   for (;;) {
     slot.readers.fetch_add(1, std::memory_order_seq_cst);
     if (writing_.load(std::memory_order_seq_cst) == 0) return;
@@ -99,8 +116,6 @@ void ReadMostlyLock::lock_shared() const {
     waitWhileWriting();
   }
 }
-
-void ReadMostlyLock::unlock_shared() const { leave(mySlot()); }
 
 void ReadMostlyLock::leave(Slot& slot) const {
   slot.readers.fetch_sub(1, std::memory_order_seq_cst);
@@ -114,13 +129,45 @@ void ReadMostlyLock::leave(Slot& slot) const {
 void ReadMostlyLock::waitWhileWriting() const {
   if (spinUntil([this] { return writing_.load(std::memory_order_acquire) == 0; })) return;
   while (writing_.load(std::memory_order_seq_cst) != 0) {
-    pthread_mutex_lock(&writers_);
-    pthread_mutex_unlock(&writers_);
+    takeOwner();
+    releaseOwner();
+  }
+}
+
+void ReadMostlyLock::takeOwner() const {
+  std::uint32_t free = 0;
+  if (!owner_.compare_exchange_strong(free, threadId(), std::memory_order_seq_cst)) {
+    takeOwnerInKernel();
+  }
+  noteTaken(&owner_);
+}
+
+// The kernel queues the waiters by priority and lends the owner the highest one's until it
+// lets go. Where it has no such futexes, the waiter sleeps a moment between tries instead.
+void ReadMostlyLock::takeOwnerInKernel() const {
+  for (;;) {
+    if (syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&owner_), FUTEX_LOCK_PI_PRIVATE, 0,
+                nullptr, nullptr, 0) == 0) {
+      break;
+    }
+    std::uint32_t free = 0;
+    if (owner_.compare_exchange_strong(free, threadId(), std::memory_order_seq_cst)) break;
+    if (errno == ENOSYS) std::this_thread::sleep_for(std::chrono::microseconds(50));
+  }
+}
+
+void ReadMostlyLock::releaseOwner() const {
+  noteReleasing(&owner_);
+  std::uint32_t held = owner_.load(std::memory_order_relaxed);
+  if ((held & FUTEX_WAITERS) != 0 ||
+      !owner_.compare_exchange_strong(held, 0, std::memory_order_seq_cst)) {
+    syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&owner_), FUTEX_UNLOCK_PI_PRIVATE, 0,
+            nullptr, nullptr, 0);
   }
 }
 
 void ReadMostlyLock::lock() {
-  pthread_mutex_lock(&writers_);
+  takeOwner();
   writing_.store(1, std::memory_order_seq_cst);
   const std::size_t used = std::min(kSlots, threads_with_slots.load(std::memory_order_seq_cst));
   for (std::size_t i = 0; i < used; ++i) waitUntilEmpty(slots_[i]);
@@ -136,9 +183,11 @@ void ReadMostlyLock::waitUntilEmpty(const Slot& slot) {
   }
 }
 
+// Readers that still see the flag raised only wait longer; the next writer raises it again in
+// the total order, after this: a release store is enough.
 void ReadMostlyLock::unlock() {
-  writing_.store(0, std::memory_order_seq_cst);
-  pthread_mutex_unlock(&writers_);
+  writing_.store(0, std::memory_order_release);
+  releaseOwner();
 }
 
 }  // namespace lcmtf::detail

@@ -4,7 +4,6 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
-#include <pthread.h>
 
 namespace lcmtf::detail {
 
@@ -14,18 +13,15 @@ namespace lcmtf::detail {
 /// on a mutex), waits until every slot is empty, and has the data to itself.
 ///
 /// Whoever must wait spins briefly, then sleeps in the kernel until the other side wakes it:
-/// a real-time thread never spins on a lower-priority one, which could then never run. A reader
-/// waits for a writer on the writers' mutex, which inherits priority: the writer then runs at
-/// the waiting reader's priority until it is done.
+/// a real-time thread never spins on a lower-priority one, which could then never run. Writers
+/// take turns on a priority-inheriting futex, and a reader waits for a writer by taking it
+/// too: the writer then runs at the waiting reader's priority until it is done.
 class ReadMostlyLock {
  public:
-  ReadMostlyLock();
-  ~ReadMostlyLock();
+  ReadMostlyLock() = default;
   ReadMostlyLock(const ReadMostlyLock&) = delete;
   ReadMostlyLock& operator=(const ReadMostlyLock&) = delete;
 
-  void lock_shared() const;
-  void unlock_shared() const;
   void lock();
   void unlock();
 
@@ -34,19 +30,43 @@ class ReadMostlyLock {
   struct alignas(64) Slot {
     std::atomic<std::size_t> readers{0};
   };
+
+ public:
+  /// Holds the lock shared for its lifetime, finding the thread's slot once for both ends.
+  class SharedHold {
+   public:
+    explicit SharedHold(const ReadMostlyLock& lock) : lock_(lock), slot_(lock.mySlot()) {
+      lock_.enter(slot_);
+    }
+    ~SharedHold() { lock_.leave(slot_); }
+    SharedHold(const SharedHold&) = delete;
+    SharedHold& operator=(const SharedHold&) = delete;
+
+   private:
+    const ReadMostlyLock& lock_;
+    Slot& slot_;
+  };
+
+ private:
   Slot& mySlot() const;
+  void enter(Slot& slot) const;
   void leave(Slot& slot) const;
   void waitWhileWriting() const;
   void waitUntilEmpty(const Slot& slot);
+  void takeOwner() const;
+  void takeOwnerInKernel() const;
+  void releaseOwner() const;
 
   mutable std::array<Slot, kSlots> slots_;
   // Read by every reader: on a line of its own, written only when a writer comes and goes.
   alignas(64) std::atomic<std::uint32_t> writing_{0};
   mutable std::atomic<std::uint32_t> writer_sleeping_{0};
+  // The writers' turns, held from lock() to unlock(): 0 when free, else the holder's thread id
+  // (with the kernel's waiters bit while others sleep on it), as the kernel's
+  // priority-inheriting futexes keep it. A waiting reader takes it too, and lets go at once.
+  mutable std::atomic<std::uint32_t> owner_{0};
   // Changed, then woken, by a reader leaving while the writer sleeps on it.
   alignas(64) mutable std::atomic<std::uint32_t> reader_left_{0};
-  // Held by the writer from lock() to unlock().
-  mutable pthread_mutex_t writers_;
 };
 
 }  // namespace lcmtf::detail
