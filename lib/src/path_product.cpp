@@ -24,6 +24,12 @@ LCMTF_WIDE_VECTORS void pathProduct(const Transform* const* up_from_source,
                                     std::size_t source_count,
                                     const Transform* const* up_from_target,
                                     std::size_t target_count, Transform& target_T_source) {
+  // Where the target is above the source (as for a root), its side is the identity: composing
+  // with it would only lengthen the chain the answer waits on.
+  if (target_count == 0) {
+    target_T_source = chainProduct(up_from_source, source_count);
+    return;
+  }
   const Transform ancestor_T_source = chainProduct(up_from_source, source_count);
   const Transform ancestor_T_target = chainProduct(up_from_target, target_count);
   // target_T_ancestor * ancestor_T_source, without forming the inverse.
