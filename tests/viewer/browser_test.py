@@ -218,8 +218,11 @@ def save_screenshot(page, path):
 
 
 def scrub_to(page, stamp):
-    """Moves the paused time slider to `stamp` and waits until the page drew that time."""
-    stamp = round(stamp)
+    """Moves the paused time slider to `stamp` and waits until the page drew that time. The
+    history moves on while the page is paused: a stamp that has left it, or is about to, is
+    taken from half a second inside its oldest end instead. Returns the stamp drawn."""
+    history = page.evaluate("lcmtfViewer.history")
+    stamp = round(min(max(stamp, history["oldest"] + 500_000), history["newest"]))
     page.evaluate(
         "(() => { const s = document.getElementById('time-slider');"
         f" s.value = '{stamp}'; s.dispatchEvent(new Event('input', {{bubbles: true}})); }})()")
