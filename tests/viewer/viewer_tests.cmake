@@ -45,5 +45,7 @@ if(LCMTF_SYSTEM_PYTHON AND TARGET lcmtf-viewer AND TARGET lcmtf-urdf-publisher
   set_tests_properties(${viewer_browser_tests} PROPERTIES
     TIMEOUT 180 SKIP_RETURN_CODE 77
     # One Chromium drawing with SwiftShader at a time keeps their timing honest.
-    RESOURCE_LOCK lcmtf_viewer_browser)
+    RESOURCE_LOCK lcmtf_viewer_browser
+    # The scripts import each other from the source tree, which the tests leave as they found it.
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 endif()
