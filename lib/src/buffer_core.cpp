@@ -12,9 +12,6 @@
 
 namespace lcmtf {
 
-using SharedLock = detail::ReadMostlyLock::SharedHold;
-using ExclusiveLock = std::unique_lock<detail::ReadMostlyLock>;
-
 const char* describe(InsertRejection kind) {
   switch (kind) {
     case InsertRejection::kNonFinite:

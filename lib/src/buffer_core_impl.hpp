@@ -22,6 +22,10 @@
 
 namespace lcmtf {
 
+/// How lookups and the other readers hold the buffer's lock, and how inserts do.
+using SharedLock = detail::ReadMostlyLock::SharedHold;
+using ExclusiveLock = std::unique_lock<detail::ReadMostlyLock>;
+
 /// The newest stamp at which every dynamic edge added so far has data, once there is one: the
 /// latest common time of a path (0 when it has no dynamic edge). As in tf, an edge whose newest
 /// sample is stamped 0 (time 0 also asks for the latest) sets no bound.

@@ -52,12 +52,12 @@ std::string fixed(double value, int digits) {
 }  // namespace
 
 std::vector<EdgeDescription> BufferCore::describeEdges() const {
-  detail::ReadMostlyLock::SharedHold lock(impl_->lock_);
+  SharedLock lock(impl_->lock_);
   return describeEdgesOf(impl_->frames_, impl_->authorities_);
 }
 
 std::string BufferCore::allFramesAsYaml() const {
-  detail::ReadMostlyLock::SharedHold lock(impl_->lock_);
+  SharedLock lock(impl_->lock_);
   std::ostringstream yaml;
   for (const EdgeDescription& edge : describeEdgesOf(impl_->frames_, impl_->authorities_)) {
     yaml << yamlQuoted(edge.child) << ":\n"
@@ -75,7 +75,7 @@ std::string BufferCore::allFramesAsYaml() const {
 }
 
 std::string BufferCore::allFramesAsDot() const {
-  detail::ReadMostlyLock::SharedHold lock(impl_->lock_);
+  SharedLock lock(impl_->lock_);
   std::ostringstream dot;
   dot << "digraph lcmtf {\n  rankdir=TB;\n  node [shape=box];\n";
   for (std::size_t id = 1; id < impl_->frames_.size(); ++id) {

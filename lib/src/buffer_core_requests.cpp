@@ -31,7 +31,7 @@ void BufferCore::cancelTransformableRequest(TransformableRequestHandle handle) c
 std::vector<std::function<void()>> BufferCore::Impl::collectDecidedRequests() {
   std::vector<std::function<void()>> decided;
   std::lock_guard<std::mutex> guard(requests_mutex_);
-  detail::ReadMostlyLock::SharedHold lock(lock_);
+  SharedLock lock(lock_);
   for (auto request = requests_.begin(); request != requests_.end();) {
     TransformableRequest& r = request->second;
     if (r.target_id == kNoFrame) r.target_id = idOf(stripLeadingSlash(r.target));

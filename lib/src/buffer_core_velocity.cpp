@@ -37,7 +37,7 @@ Velocity BufferCore::lookupVelocity(const std::string& tracking, const std::stri
   std::int64_t oldest = 0;
   std::int64_t newest = 0;
   {
-    detail::ReadMostlyLock::SharedHold lock(impl_->lock_);
+    SharedLock lock(impl_->lock_);
     FrameId observation_id = kNoFrame;
     FrameId tracking_id = kNoFrame;
     LookupFailure failure = impl_->resolve(observation, "observation", observation_id);
