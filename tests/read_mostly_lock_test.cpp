@@ -1,0 +1,125 @@
+// The buffer's reader-writer lock on its own: more reader threads than it has slots, threads
+// that end while others begin, and a writer that must sleep until long readers leave. Run under
+// ThreadSanitizer in CI.
+#include "read_mostly_lock.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "support/test_scale.hpp"
+
+namespace lcmtf::detail {
+namespace {
+
+using std::chrono::milliseconds;
+
+// Two counts a writer raises together: a reader that sees them differ saw a write half done.
+struct GuardedPair {
+  mutable ReadMostlyLock lock;
+  std::uint64_t first = 0;
+  std::uint64_t second = 0;
+
+  void write() {
+    std::lock_guard<ReadMostlyLock> hold(lock);
+    ++first;
+    ++second;
+  }
+  bool readWhole() const {
+    ReadMostlyLock::SharedHold hold(lock);
+    return first == second;
+  }
+};
+
+TEST(ReadMostlyLockConcurrency, MoreReaderThreadsThanSlotsReadOnlyWholeWrites) {
+  GuardedPair pair;
+  std::atomic<bool> reading{true};
+  std::atomic<std::uint64_t> torn{0};
+  std::atomic<std::uint64_t> reads{0};
+  std::uint64_t writes = 0;
+  std::thread writer([&] {
+    while (reading.load()) {
+      pair.write();
+      ++writes;
+    }
+  });
+  // More threads at once than there are slots, so that several count themselves in each, in
+  // waves of threads that end before the next begin.
+  constexpr int kWaves = 4;
+  constexpr int kThreadsPerWave = 40;  // the lock has 16 slots
+  const int reads_per_thread = lcmtf_test::scaledCount(4000);
+  for (int wave = 0; wave < kWaves; ++wave) {
+    std::vector<std::thread> readers;
+    for (int r = 0; r < kThreadsPerWave; ++r) {
+      readers.emplace_back([&] {
+        for (int i = 0; i < reads_per_thread; ++i) {
+          if (!pair.readWhole()) ++torn;
+          ++reads;
+        }
+      });
+    }
+    for (std::thread& reader : readers) reader.join();
+  }
+  reading = false;
+  writer.join();
+  EXPECT_EQ(torn.load(), 0u);
+  EXPECT_EQ(reads.load(), static_cast<std::uint64_t>(kWaves) * kThreadsPerWave * reads_per_thread);
+  EXPECT_GT(writes, 0u);
+  EXPECT_TRUE(pair.readWhole());
+  EXPECT_EQ(pair.first, writes);
+}
+
+// A reader holding on for far longer than a writer spins makes the writer sleep; the reader's
+// leaving must wake it. A lost wake-up hangs this test.
+TEST(ReadMostlyLockConcurrency, WriterSleepingOnLongReadersIsWokenWhenTheyLeave) {
+  GuardedPair pair;
+  const int rounds = lcmtf_test::scaledCount(200);
+  constexpr int kReaders = 3;
+  for (int round = 0; round < rounds; ++round) {
+    std::atomic<int> holding{0};
+    std::vector<std::thread> readers;
+    for (int r = 0; r < kReaders; ++r) {
+      readers.emplace_back([&pair, &holding, r, round] {
+        ReadMostlyLock::SharedHold hold(pair.lock);
+        ++holding;
+        std::this_thread::sleep_for(std::chrono::microseconds(200 + 150 * ((r + round) % 4)));
+      });
+    }
+    while (holding.load() < kReaders) std::this_thread::yield();
+    pair.write();
+    for (std::thread& reader : readers) reader.join();
+  }
+  EXPECT_EQ(pair.first, static_cast<std::uint64_t>(rounds));
+  EXPECT_TRUE(pair.readWhole());
+}
+
+// A reader that comes while a writer holds the lock waits, and reads the whole write after.
+TEST(ReadMostlyLockConcurrency, ReaderComingDuringAWriteWaitsForIt) {
+  GuardedPair pair;
+  std::atomic<bool> entered{false};
+  std::uint64_t seen = 0;
+  std::thread reader;
+  {
+    std::lock_guard<ReadMostlyLock> hold(pair.lock);
+    ++pair.first;
+    reader = std::thread([&] {
+      ReadMostlyLock::SharedHold read(pair.lock);
+      entered = true;
+      seen = pair.second;
+    });
+    std::this_thread::sleep_for(milliseconds(20));
+    EXPECT_FALSE(entered.load());
+    ++pair.second;
+  }
+  reader.join();
+  EXPECT_TRUE(entered.load());
+  EXPECT_EQ(seen, 1u);
+}
+
+}  // namespace
+}  // namespace lcmtf::detail
