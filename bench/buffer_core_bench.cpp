@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "buffer_core_summary.hpp"
+#include "large_arrays.hpp"
 #include "lcmtf_subject.hpp"
 #include "memory_latency.hpp"
 #include "tree_shapes.hpp"
@@ -53,9 +54,10 @@ const Subject& sharedFilled(std::size_t shape) {
   return *filled[shape];
 }
 
+// The heap's bytes in use, and the large arrays lcmtf maps outside it.
 std::size_t heapInUse() {
   const struct mallinfo2 info = mallinfo2();
-  return info.uordblks + info.hblkhd;
+  return info.uordblks + info.hblkhd + lcmtf::detail::mappedLargeArrayBytes();
 }
 
 // In-order inserts of the next sample of each dynamic edge in turn, so every insert also prunes

@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "large_arrays.hpp"
 #include "time_cache.hpp"
 
 namespace lcmtf::detail {
@@ -117,7 +118,7 @@ class FrameNameIndex {
   }
 
   void grow() {
-    std::vector<Slot> old;
+    std::vector<Slot, LargeArrayAllocator<Slot>> old;
     old.swap(slots_);
     slots_.resize(old.empty() ? 64 : old.size() * 2);
     mask_ = slots_.size() - 1;
@@ -126,7 +127,7 @@ class FrameNameIndex {
     }
   }
 
-  std::vector<Slot> slots_;
+  std::vector<Slot, LargeArrayAllocator<Slot>> slots_;
   std::size_t mask_ = 0;
   std::size_t count_ = 0;
 };

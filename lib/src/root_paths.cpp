@@ -45,10 +45,10 @@ RootStep* RootPaths::allocateSteps(std::size_t count) {
     last_chunk_size_ =
         step_chunks_.empty() ? kFirstChunk : std::min(2 * last_chunk_size_, kLargestChunk);
     last_chunk_size_ = std::max<std::size_t>(last_chunk_size_, count);
-    step_chunks_.emplace_back(new RootStep[last_chunk_size_]);
+    step_chunks_.emplace_back(last_chunk_size_);
     last_chunk_used_ = 0;
   }
-  RootStep* const steps = step_chunks_.back().get() + last_chunk_used_;
+  RootStep* const steps = step_chunks_.back().data() + last_chunk_used_;
   last_chunk_used_ += count;
   return steps;
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "frame_record.hpp"
+#include "large_arrays.hpp"
 
 namespace lcmtf {
 
@@ -76,10 +77,10 @@ class RootPaths {
   void settleFrom(const FrameTable& frames, FrameId first);
 
   // The steps of every path, in chunks that never move, each twice the one before.
-  std::vector<std::unique_ptr<RootStep[]>> step_chunks_;
+  std::vector<std::vector<RootStep, detail::LargeArrayAllocator<RootStep>>> step_chunks_;
   std::size_t last_chunk_size_ = 0;
   std::size_t last_chunk_used_ = 0;
-  std::vector<Entry> entries_;
+  std::vector<Entry, detail::LargeArrayAllocator<Entry>> entries_;
   const FrameTable* built_for_ = nullptr;
 };
 

@@ -6,6 +6,8 @@
 #include <memory>
 #include <vector>
 
+#include "large_arrays.hpp"
+
 namespace lcmtf::detail {
 
 /// A sequence indexed like a vector whose elements never move: it grows by chunks, each twice
@@ -29,7 +31,8 @@ class StableVector {
     const Place place = placeOf(size_);
     if (place.chunk == chunks_.size()) {
       // Storage left uninitialized: each element is constructed as it is added.
-      chunks_.emplace_back(new Storage[kFirstChunk << place.chunk]);
+      chunks_.reserve(chunks_.size() + 1);
+      chunks_.push_back(allocator().allocate(kFirstChunk << place.chunk));
     }
     T* element = ::new (static_cast<void*>(&chunks_[place.chunk][place.offset]))
         T(std::forward<Args>(args)...);
@@ -39,6 +42,9 @@ class StableVector {
 
   ~StableVector() {
     for (std::size_t i = size_; i-- > 0;) at(i).~T();
+    for (std::size_t chunk = 0; chunk < chunks_.size(); ++chunk) {
+      allocator().deallocate(chunks_[chunk], kFirstChunk << chunk);
+    }
   }
 
   template <class Table, class Element>
@@ -76,6 +82,7 @@ class StableVector {
   struct alignas(T) Storage {
     unsigned char bytes[sizeof(T)];
   };
+  static LargeArrayAllocator<Storage> allocator() { return {}; }
   struct Place {
     std::size_t chunk;
     std::size_t offset;
@@ -95,7 +102,7 @@ class StableVector {
     return *std::launder(reinterpret_cast<T*>(chunks_[place.chunk][place.offset].bytes));
   }
 
-  std::vector<std::unique_ptr<Storage[]>> chunks_;
+  std::vector<Storage*> chunks_;
   std::size_t size_ = 0;
 };
 
