@@ -2,6 +2,7 @@
 // when built with LCMTF_BENCH_WITH_TF2.
 #include <benchmark/benchmark.h>
 #include <malloc.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <atomic>
@@ -93,6 +94,13 @@ void insertBench(benchmark::State& state, std::size_t shape) {
   }
 }
 
+// Page faults the process has taken that the kernel could serve without reading a disk.
+long minorPageFaults() {
+  struct rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_minflt;
+}
+
 // The first sample of every edge into an empty buffer, each one bringing a new frame. Both
 // libraries start from a heap that has given its free pages back to the system, so neither
 // finds memory an earlier benchmark already paid the page faults for.
@@ -102,6 +110,7 @@ void addFramesBench(benchmark::State& state, std::size_t shape) {
   malloc_trim(0);
   Subject subject(w);
   std::size_t i = 0;
+  const long faults_before = minorPageFaults();
   for (auto _ : state) {
     const Edge& edge = w.edges[i];
     if (edge.dynamic) {
@@ -111,6 +120,8 @@ void addFramesBench(benchmark::State& state, std::size_t shape) {
     }
     ++i;
   }
+  state.counters["page_faults_per_frame"] =
+      static_cast<double>(minorPageFaults() - faults_before) / static_cast<double>(i);
 }
 
 template <class Subject, class Lookup>

@@ -61,6 +61,14 @@ inline void printShapeRows(const RecordingReporter& reporter, const std::string&
     }
     std::printf("\n");
   }
+  const double ours_faults =
+      counter(reporter.find("lcmtf/" + shape + "/add_frames"), "page_faults_per_frame");
+  const double theirs_faults =
+      counter(reporter.find("tf2/" + shape + "/add_frames"), "page_faults_per_frame");
+  if (!std::isnan(ours_faults)) {
+    std::printf("page faults per frame added (fastest round): lcmtf %.3f, tf2 %.3f\n", ours_faults,
+                theirs_faults);
+  }
   const double ours_sample =
       counter(reporter.find("lcmtf/" + shape + "/memory"), "bytes_per_sample");
   const double theirs_sample =
