@@ -3,11 +3,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <new>
 #include <type_traits>
+#include <utility>
 
 #include "lcmtf/transform.hpp"
-#include "unfilled_array.hpp"
 
 namespace lcmtf::detail {
 
@@ -16,12 +17,23 @@ namespace lcmtf::detail {
 /// rotation to 16 bytes, the stamp fills the 8 bytes that leaves after the translation; else it
 /// follows the transform. Slots are left unwritten until stored, so that a ring sized for a
 /// long history costs no page faults (under the writer's lock) until the history fills it.
+///
+/// Each slot has an arc too, a double the edge keeps for interpolating from it to the next
+/// slot. Slots and arcs share one plain heap block, aligned by hand: the heap's aligned
+/// allocation splits off and frees its margins on every ring, and with a second block for the
+/// arcs, adding a frame to the forest of buffer_core_bench took 6-10 % longer.
 class SampleRing {
  public:
   SampleRing() = default;
-  explicit SampleRing(std::size_t size) : slots_(size) {}
+  explicit SampleRing(std::size_t size) : size_(size) {
+    if (size == 0) return;
+    block_.reset(new unsigned char[size * (sizeof(Slot) + sizeof(double)) + kAlignmentSlack]);
+    const auto start = reinterpret_cast<std::uintptr_t>(block_.get());
+    slots_ = reinterpret_cast<Slot*>((start + alignof(Slot) - 1) & ~(alignof(Slot) - 1));
+    arcs_ = reinterpret_cast<double*>(slots_ + size);
+  }
 
-  std::size_t size() const { return slots_.size(); }
+  std::size_t size() const { return size_; }
   /// The transform last stored in slot `index`; only stored slots may be read.
   const Transform& transform(std::size_t index) const {
     return *std::launder(reinterpret_cast<const Transform*>(slots_[index].bytes));
@@ -40,10 +52,18 @@ class SampleRing {
   void copy(const SampleRing& source, std::size_t from, std::size_t to) {
     std::memcpy(slots_[to].bytes, source.slots_[from].bytes, sizeof(Slot));
   }
+  /// Slot `index`'s arc, to the next slot's rotation.
+  double& arc(std::size_t index) { return arcs_[index]; }
+  double arc(std::size_t index) const { return arcs_[index]; }
   /// Where slot `index` is, to prefetch.
   const void* address(std::size_t index) const { return slots_[index].bytes; }
-  void swap(SampleRing& other) noexcept { slots_.swap(other.slots_); }
-  void clear() { slots_.clear(); }
+  void swap(SampleRing& other) noexcept {
+    block_.swap(other.block_);
+    std::swap(slots_, other.slots_);
+    std::swap(arcs_, other.arcs_);
+    std::swap(size_, other.size_);
+  }
+  void clear() { SampleRing().swap(*this); }
 
  private:
   static_assert(std::is_trivially_destructible_v<Transform>);
@@ -58,8 +78,13 @@ class SampleRing {
     unsigned char bytes[kUsedBytes];
   };
   static_assert(!kStampInPadding || sizeof(Slot) == 64);
+  // The most the slots start after a heap block's start, which is aligned for any scalar.
+  static constexpr std::size_t kAlignmentSlack = alignof(Slot) - alignof(std::max_align_t);
 
-  UnfilledArray<Slot> slots_;
+  std::unique_ptr<unsigned char[]> block_;
+  Slot* slots_ = nullptr;
+  double* arcs_ = nullptr;
+  std::size_t size_ = 0;
 };
 
 }  // namespace lcmtf::detail

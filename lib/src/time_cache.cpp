@@ -6,7 +6,6 @@ namespace lcmtf::detail {
 
 void TimeCache::setStatic(FrameId parent, const Transform& transform) {
   samples_.clear();
-  arcs_.clear();
   parents_.clear();
   static_value_ = EdgeValue{parent, transform};
   head_ = 0;
@@ -74,13 +73,13 @@ void TimeCache::move(std::size_t from, std::size_t to) {
   const std::size_t source = slot(from);
   const std::size_t destination = slot(to);
   samples_.copy(samples_, source, destination);
-  arcs_[destination] = arcs_[source];
+  samples_.arc(destination) = samples_.arc(source);
   if (parents_.size() != 0) parents_[destination] = parents_[source];
 }
 
 void TimeCache::refreshArc(std::size_t index) {
   if (index + 1 >= count_) return;
-  arcs_[slot(index)] =
+  samples_.arc(slot(index)) =
       signedArcSquared(transformAt(index).rotation, transformAt(index + 1).rotation);
 }
 
@@ -113,15 +112,13 @@ void TimeCache::grow(std::int64_t cache_time, std::size_t most_samples) {
   }
   wanted = std::max(std::min(wanted, std::max(most_samples, kSmallest)), count_ + 1);
   SampleRing samples(wanted);
-  UnfilledArray<double> arcs(wanted);
   UnfilledArray<FrameId> parents(parents_.size() != 0 ? wanted : 0);
   for (std::size_t i = 0; i < count_; ++i) {
     samples.copy(samples_, slot(i), i);
-    arcs[i] = arcs_[slot(i)];
+    samples.arc(i) = samples_.arc(slot(i));
     if (parents.size() != 0) parents[i] = parents_[slot(i)];
   }
   samples_.swap(samples);
-  arcs_.swap(arcs);
   parents_.swap(parents);
   head_ = 0;
 }

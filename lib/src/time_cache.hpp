@@ -173,7 +173,7 @@ class TimeCache {
     return SampleSpan{&samples_.transform(at), &samples_.transform(next),
                       static_cast<double>(stamp - older_stamp) /
                           static_cast<double>(samples_.stamp(next) - older_stamp),
-                      parent, arcs_[at]};
+                      parent, samples_.arc(at)};
   }
   std::size_t indexAtOrBefore(std::int64_t stamp) const;
   std::size_t searchNear(std::int64_t stamp, std::size_t guess) const;
@@ -188,11 +188,10 @@ class TimeCache {
 
   // What lookups and inserts of a dynamic edge read come first, together, so that they touch
   // two cache lines of the edge; the static value, which they do not read, comes last.
-  SampleRing samples_;
-  // What interpolating from each sample to the next needs to know of the arc between their
-  // rotations (signedArcSquared()), worked out once as samples come rather than in every
+  // With each sample, what interpolating from it to the next needs to know of the arc between
+  // their rotations (signedArcSquared()), worked out once as samples come rather than in every
   // lookup: 8 bytes a sample take about a sixth off the PR2 tree's deepest lookups.
-  UnfilledArray<double> arcs_;
+  SampleRing samples_;
   std::size_t head_ = 0;
   std::size_t count_ = 0;
   // Copies of what lookups read most, so walking the tree touches no sample.
