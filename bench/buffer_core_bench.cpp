@@ -19,6 +19,7 @@
 #include "lcmtf_subject.hpp"
 #include "memory_latency.hpp"
 #include "tree_shapes.hpp"
+#include "warm_memory.hpp"
 #ifdef LCMTF_BENCH_WITH_TF2
 #include "tf2_subject.hpp"
 #endif
@@ -94,23 +95,32 @@ void insertBench(benchmark::State& state, std::size_t shape) {
   }
 }
 
-// Page faults the process has taken that the kernel could serve without reading a disk.
-long minorPageFaults() {
+// The process's page faults that the kernel could serve without reading a disk, and its time
+// in the kernel, in microseconds.
+struct KernelUse {
+  long faults = 0;
+  double kernel_us = 0;
+};
+KernelUse kernelUse() {
   struct rusage usage {};
   getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_minflt;
+  return {usage.ru_minflt, static_cast<double>(usage.ru_stime.tv_sec) * 1e6 +
+                               static_cast<double>(usage.ru_stime.tv_usec)};
 }
 
 // The first sample of every edge into an empty buffer, each one bringing a new frame. Both
 // libraries start from a heap that has given its free pages back to the system, so neither
-// finds memory an earlier benchmark already paid the page faults for.
+// finds memory an earlier benchmark already paid the page faults for, and from free memory that
+// has been touched once (warm_memory.hpp), so that neither pays for a first touch the other
+// did not.
 template <class Subject>
 void addFramesBench(benchmark::State& state, std::size_t shape) {
   const Workload& w = workload(shape);
   malloc_trim(0);
+  warmFreeMemory();
   Subject subject(w);
   std::size_t i = 0;
-  const long faults_before = minorPageFaults();
+  const KernelUse before = kernelUse();
   for (auto _ : state) {
     const Edge& edge = w.edges[i];
     if (edge.dynamic) {
@@ -120,8 +130,11 @@ void addFramesBench(benchmark::State& state, std::size_t shape) {
     }
     ++i;
   }
+  const KernelUse after = kernelUse();
+  const auto frames = static_cast<double>(i);
   state.counters["page_faults_per_frame"] =
-      static_cast<double>(minorPageFaults() - faults_before) / static_cast<double>(i);
+      static_cast<double>(after.faults - before.faults) / frames;
+  state.counters["kernel_ns_per_frame"] = (after.kernel_us - before.kernel_us) * 1e3 / frames;
 }
 
 template <class Subject, class Lookup>

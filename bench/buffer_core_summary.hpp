@@ -68,6 +68,9 @@ inline void printShapeRows(const RecordingReporter& reporter, const std::string&
   if (!std::isnan(ours_faults)) {
     std::printf("page faults per frame added (fastest round): lcmtf %.3f, tf2 %.3f\n", ours_faults,
                 theirs_faults);
+    std::printf("time in the kernel per frame added (same round): lcmtf %.0f ns, tf2 %.0f ns\n",
+                counter(reporter.find("lcmtf/" + shape + "/add_frames"), "kernel_ns_per_frame"),
+                counter(reporter.find("tf2/" + shape + "/add_frames"), "kernel_ns_per_frame"));
   }
   const double ours_sample =
       counter(reporter.find("lcmtf/" + shape + "/memory"), "bytes_per_sample");
