@@ -15,14 +15,13 @@ namespace bench {
 
 /// Touches `bytes` of fresh memory, in huge pages where the kernel gives them, and gives it
 /// back: the kernel's free memory then starts with that much that has been used once, as on a
-/// machine that has been running a while. False when the memory could not be mapped.
-inline bool warmFreeMemory(std::size_t bytes = std::size_t{768} << 20) {
+/// machine that has been running a while. Does nothing when the memory cannot be mapped.
+inline void warmFreeMemory(std::size_t bytes = std::size_t{768} << 20) {
   void* memory = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  if (memory == MAP_FAILED) return false;
+  if (memory == MAP_FAILED) return;
   madvise(memory, bytes, MADV_HUGEPAGE);
   std::memset(memory, 1, bytes);
   munmap(memory, bytes);
-  return true;
 }
 
 }  // namespace bench
