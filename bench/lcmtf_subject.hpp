@@ -13,7 +13,8 @@ class LcmtfSubject {
  public:
   static constexpr const char* kName = "lcmtf";
 
-  explicit LcmtfSubject(const Workload& workload) : names_(workload.names) {
+  explicit LcmtfSubject(const Workload& workload)
+      : buffer_(lcmtf::Duration(workload.history())), names_(workload.names) {
     for (const Edge& edge : workload.edges) addEdge(names_[edge.parent], names_[edge.child]);
   }
 

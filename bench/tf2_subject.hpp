@@ -15,7 +15,9 @@ class Tf2Subject {
  public:
   static constexpr const char* kName = "tf2";
 
-  explicit Tf2Subject(const Workload& workload) : names_(workload.names) {
+  explicit Tf2Subject(const Workload& workload)
+      : buffer_(ros::Duration(static_cast<double>(workload.history()) * 1e-6)),
+        names_(workload.names) {
     for (const Edge& edge : workload.edges) addEdge(names_[edge.parent], names_[edge.child]);
   }
 
@@ -68,7 +70,7 @@ class Tf2Subject {
                      static_cast<std::uint32_t>(utime % 1'000'000 * 1000));
   }
 
-  tf2::BufferCore buffer_{ros::Duration(10.0)};
+  tf2::BufferCore buffer_;
   std::vector<std::string> names_;
   std::vector<geometry_msgs::TransformStamped> messages_;
   const std::string authority_ = "robot_state_publisher";

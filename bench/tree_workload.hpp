@@ -54,6 +54,9 @@ struct Workload {
   std::vector<Query> deepest_chain;  // frame 0 and `deepest`, either way round
 
   std::size_t frameCount() const { return names.size(); }
+  // How long each buffer keeps an edge's history: that of a dynamic edge, so that every insert
+  // past it drops the edge's oldest sample.
+  std::int64_t history() const { return static_cast<std::int64_t>(samples) * kPeriod; }
   std::int64_t stamp(const Edge& edge, std::size_t k) const {
     return edge.first_stamp + static_cast<std::int64_t>(k) * kPeriod;
   }
