@@ -600,6 +600,40 @@ TEST(BufferCoreInsert, AuthorityConflictsAreCountedAndShownInTheYamlDump) {
   EXPECT_THAT(yaml.substr(arm_entry), HasSubstr("authority_conflicts: 0\n"));
 }
 
+// The buffer guesses each insert's child from the order of the inserts before: the edges of one
+// cycle, then the same edges reordered, interleaved with another publisher's, with new frames
+// among them, and under names that differ from the guess in a single byte anywhere.
+TEST(BufferCoreInsert, EachSampleLandsOnItsOwnEdgeWhateverTheOrderOfInserts) {
+  BufferCore buffer;
+  std::vector<std::string> children;
+  const std::string longest = "an_even_longer_joint_name_that_takes_more_than_forty_bytes_";
+  for (const std::string stem : {"j", "joint_", "a_rather_longer_joint_name_", longest.c_str()}) {
+    for (const char last : {'1', '2', '3'}) children.push_back(stem + last);
+    children.push_back("x" + stem.substr(1) + "1");
+  }
+  std::map<std::string, double> newest;
+  std::mt19937_64 random(11);
+  std::vector<std::string> order = children;
+  for (int round = 1; round <= 40; ++round) {
+    if (round > 10) std::shuffle(order.begin(), order.end(), random);
+    if (round == 20) order.insert(order.begin() + 3, "joint_4");
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const double x = round * 100.0 + static_cast<double>(i);
+      put(buffer, "base", order[i], at(round), pose({x, 0, 0}, 0, kZ));
+      newest[order[i]] = x;
+      if (round % 3 == 0) {
+        put(buffer, "map", "other_publisher_" + std::to_string(i % 2), at(round),
+            pose({0, 0, 0}, 0, kZ));
+      }
+    }
+    for (const auto& [child, x] : newest) {
+      ASSERT_EQ(buffer.lookupTransform("base", child, at(round)).transform.translation.x(), x)
+          << child << " in round " << round;
+    }
+  }
+  EXPECT_EQ(buffer.getAllFrameNames().size(), children.size() + 5);
+}
+
 TEST(BufferCoreInsert, InsertedCountsEveryStoredSampleStaticOnesIncluded) {
   BufferCore buffer;
   put(buffer, "world", "base", at(1), pose({0, 0, 0}, 0, kZ));

@@ -52,6 +52,26 @@ BufferCore::Impl::Impl(Duration cache_time)
 
 FrameId BufferCore::Impl::idOf(std::string_view name) const { return ids_.find(name); }
 
+// Publishers send the same edges in the same order, cycle after cycle: comparing one name
+// with the frame that followed last time is cheaper than hashing it, and on a large tree it
+// saves a load from a random place in the name index, which memory then answers.
+FrameId BufferCore::Impl::knownChild(std::string_view name) const {
+  const FrameId predicted = frames_[last_inserted_].next_inserted;
+  if (predicted != kNoFrame) {
+    const std::string_view predicted_name = nameOf(predicted);
+    if (predicted_name.size() == name.size() &&
+        detail::FrameNameIndex::sameBytes(predicted_name.data(), name.data(), name.size())) {
+      return predicted;
+    }
+  }
+  return idOf(name);
+}
+
+void BufferCore::Impl::noteInserted(FrameId child) {
+  frames_[last_inserted_].next_inserted = child;
+  last_inserted_ = child;
+}
+
 FrameId BufferCore::Impl::addFrame(std::string_view name) {
   const FrameId existing = idOf(name);
   if (existing != kNoFrame) return existing;
@@ -108,7 +128,7 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
   const std::string_view child = stripLeadingSlash(transform.child_frame);
   const std::int64_t stamp = toUtime(transform.stamp);
   // Refuse a sample that is too old before adding any frame, so the refusal changes nothing.
-  const FrameId known_child = idOf(child);
+  const FrameId known_child = knownChild(child);
   if (!is_static && known_child != kNoFrame &&
       frames_[known_child].cache.isTooOld(stamp, cache_time_)) {
     reason = edgeName(transform) + " is older than the history kept: the newest sample is at " +
@@ -124,6 +144,7 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
     return InsertRejection::kEdgeFull;
   }
   const FrameId child_id = known_child != kNoFrame ? known_child : addFrame(child);
+  noteInserted(child_id);
   // An edge keeps its parent from one sample to the next: compare before hashing the name.
   const FrameId usual_parent = frames_[child_id].cache.newestParent();
   const FrameId parent_id =

@@ -93,6 +93,11 @@ class BufferCore::Impl {
   // All of these expect lock_ held (shared is enough unless they say they write).
   FrameId idOf(std::string_view name) const;
   FrameId addFrame(std::string_view name);  // exclusive lock
+  /// idOf() for the child of an edge being inserted, trying first the frame whose edge came
+  /// after the last one inserted the time before.
+  FrameId knownChild(std::string_view name) const;
+  /// Notes that `child`'s edge was inserted after the last one (exclusive lock).
+  void noteInserted(FrameId child);
   const std::string_view& nameOf(FrameId id) const { return frames_[id].name; }
   std::string quoted(FrameId id) const { return "'" + std::string(nameOf(id)) + "'"; }
 
@@ -208,6 +213,7 @@ class BufferCore::Impl {
   detail::NameArena names_;  // stable storage behind FrameRecord::name
   FrameTable frames_;
   detail::FrameNameIndex ids_;
+  FrameId last_inserted_ = kNoFrame;  // the child of the edge inserted last
   RootPaths root_paths_;
   bool root_paths_stale_ = false;
   // How many dynamic edges hold samples with more than one parent: while there are none, the

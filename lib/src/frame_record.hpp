@@ -18,6 +18,9 @@ struct alignas(64) FrameRecord {
   std::string_view name;
   detail::TimeCache cache;
   std::uint32_t authority = 0;
+  // The child of the edge inserted after this frame's the last time, so that a publisher's
+  // next edge is found without hashing its name (see BufferCore::Impl::knownChild()).
+  FrameId next_inserted = kNoFrame;
   std::uint64_t authority_conflicts = 0;
   // The highest frame reached from this one through static edges alone (this frame itself
   // when its edge is not static), and the static edges between them composed, so a lookup
