@@ -57,14 +57,7 @@ FrameId BufferCore::Impl::idOf(std::string_view name) const { return ids_.find(n
 // saves a load from a random place in the name index, which memory then answers.
 FrameId BufferCore::Impl::knownChild(std::string_view name) const {
   const FrameId predicted = frames_[last_inserted_].next_inserted;
-  if (predicted != kNoFrame) {
-    const std::string_view predicted_name = nameOf(predicted);
-    if (predicted_name.size() == name.size() &&
-        detail::FrameNameIndex::sameBytes(predicted_name.data(), name.data(), name.size())) {
-      return predicted;
-    }
-  }
-  return idOf(name);
+  return predicted != kNoFrame && nameOf(predicted) == name ? predicted : idOf(name);
 }
 
 void BufferCore::Impl::noteInserted(FrameId child) {
