@@ -11,17 +11,21 @@
 namespace lcmtf::detail {
 
 /// Frame name -> id: open addressing on a power-of-two table with a cheap hash, since every
-/// lookup by name starts here. Names are owned elsewhere and must outlive the index.
+/// lookup by name starts here. A slot holds only part of the name's hash and the id, 8 bytes,
+/// so that more of the table stays in the nearer caches; the names, which must outlive the
+/// index, are reached through the id. Ids are small and dense, as frames are numbered.
 class FrameNameIndex {
  public:
   FrameId find(std::string_view name) const {
     if (slots_.empty()) return kNoFrame;
     const std::uint64_t hash = hashOf(name);
+    const std::uint32_t tag = tagOf(hash);
     for (std::size_t i = hash & mask_;; i = (i + 1) & mask_) {
-      const Slot& slot = slots_[i];
+      const Slot slot = slots_[i];
       if (slot.id == kNoFrame) return kNoFrame;
-      if (slot.hash == hash && slot.name.size() == name.size() &&
-          sameBytes(slot.name.data(), name.data(), name.size())) {
+      if (slot.tag != tag) continue;
+      const std::string_view stored = names_[slot.id];
+      if (stored.size() == name.size() && sameBytes(stored.data(), name.data(), name.size())) {
         return slot.id;
       }
     }
@@ -30,7 +34,9 @@ class FrameNameIndex {
   void insert(std::string_view name, FrameId id) {
     // At most a quarter full, so that most names are found at the first slot tried.
     if (4 * (count_ + 1) > slots_.size()) grow();
-    place(Slot{hashOf(name), name, id});
+    if (names_.size() <= id) names_.resize(id + 1);
+    names_[id] = name;
+    place(hashOf(name), id);
     ++count_;
   }
 
@@ -105,16 +111,18 @@ class FrameNameIndex {
     return product ^ (product >> 29);
   }
 
+  // The hash's high half: its low bits pick the slot.
+  static std::uint32_t tagOf(std::uint64_t hash) { return static_cast<std::uint32_t>(hash >> 32); }
+
   struct Slot {
-    std::uint64_t hash = 0;
-    std::string_view name;
+    std::uint32_t tag = 0;
     FrameId id = kNoFrame;
   };
 
-  void place(const Slot& slot) {
-    std::size_t i = slot.hash & mask_;
+  void place(std::uint64_t hash, FrameId id) {
+    std::size_t i = hash & mask_;
     while (slots_[i].id != kNoFrame) i = (i + 1) & mask_;
-    slots_[i] = slot;
+    slots_[i] = Slot{tagOf(hash), id};
   }
 
   void grow() {
@@ -123,11 +131,12 @@ class FrameNameIndex {
     slots_.resize(old.empty() ? 64 : old.size() * 2);
     mask_ = slots_.size() - 1;
     for (const Slot& slot : old) {
-      if (slot.id != kNoFrame) place(slot);
+      if (slot.id != kNoFrame) place(hashOf(names_[slot.id]), slot.id);
     }
   }
 
   std::vector<Slot, LargeArrayAllocator<Slot>> slots_;
+  std::vector<std::string_view, LargeArrayAllocator<std::string_view>> names_;  // by id
   std::size_t mask_ = 0;
   std::size_t count_ = 0;
 };
