@@ -47,7 +47,7 @@ void expectBatchMatchesOneByOne(std::size_t count, bool arcs_known = false) {
     const double arc = arcs_known
                            ? signedArcSquared(batch.older[i].rotation, batch.newer[i].rotation)
                            : std::numeric_limits<double>::quiet_NaN();
-    tasks.push_back({&batch.older[i], &batch.newer[i], batch.ratios[i], &out[i], arc});
+    tasks.push_back({&batch.older[i], &batch.newer[i], batch.ratios[i], &out[i], arc, nullptr});
   }
   interpolateBatch(tasks.data(), tasks.size());
   for (std::size_t i = 0; i < count; ++i) {
@@ -84,6 +84,28 @@ TEST(InterpolateBatch, ArcKnownBeforehandIsNegativeWhenTheNewerRotationMustBeNeg
   EXPECT_NEAR(signedArcSquared(a, negated_b), -0.005 * 0.005, 1e-15);
   EXPECT_TRUE(std::isnan(
       signedArcSquared(a, Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitX())))));
+}
+
+TEST(InterpolateBatch, AnAnchoredTaskGivesItsAnchorTimesTheInterpolatedValue) {
+  const Batch batch = makeBatch(9);
+  const Transform anchor(
+      Eigen::Vector3d(0.5, -2.0, 1.25),
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized())));
+  std::vector<Transform> out(9);
+  std::vector<InterpolationTask> tasks;
+  for (std::size_t i = 0; i < 9; ++i) {
+    // Every other task anchored, so that anchored and plain tasks share rounds of lanes.
+    tasks.push_back({&batch.older[i], &batch.newer[i], batch.ratios[i], &out[i],
+                     std::numeric_limits<double>::quiet_NaN(), i % 2 == 0 ? &anchor : nullptr});
+  }
+  interpolateBatch(tasks.data(), tasks.size());
+  for (std::size_t i = 0; i < 9; ++i) {
+    const Transform value = interpolate(batch.older[i], batch.newer[i], batch.ratios[i]);
+    const Transform expected = i % 2 == 0 ? anchor * value : value;
+    EXPECT_LE((out[i].translation - expected.translation).norm(), 1e-14) << "task " << i;
+    EXPECT_LE((out[i].rotation.coeffs() - expected.rotation.coeffs()).norm(), 1e-15)
+        << "task " << i;
+  }
 }
 
 TEST(InterpolateBatch, EmptyBatchDoesNothing) { interpolateBatch(nullptr, 0); }

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "compose.hpp"
 #include "slerp_weights.hpp"
 #include "wide_vectors.hpp"
 
@@ -100,6 +101,10 @@ LCMTF_WIDE_VECTORS void interpolateBatch(const InterpolationTask* tasks, std::si
   std::size_t first = 0;
   for (; first + kLanes <= count; first += kLanes) interpolateFour(tasks + first, kLanes);
   if (first < count) interpolateFour(tasks + first, count - first);
+  for (std::size_t i = 0; i < count; ++i) {
+    const InterpolationTask& task = tasks[i];
+    if (task.anchor) *task.out = composed(*task.anchor, *task.out);
+  }
 }
 
 }  // namespace lcmtf::detail

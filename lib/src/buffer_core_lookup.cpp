@@ -23,7 +23,6 @@ struct WalkScratch {
   std::vector<detail::PlanStep> steps;
   std::vector<detail::InterpolationTask> tasks;
   std::vector<detail::TransformRoom> rooms;
-  std::vector<detail::Anchoring> anchorings;
   std::vector<const Transform*> values;
 };
 thread_local WalkScratch scratch;
@@ -77,11 +76,10 @@ Transform pathValue(const FrameTable& frames, WalkScratch& s, std::int64_t stamp
   if (s.tasks.size() < count) {
     s.tasks.resize(count);
     s.rooms.resize(count);
-    s.anchorings.resize(count);
     s.values.resize(count);
   }
   const detail::PathPlan plan{s.steps.data(), s.source_edges.size(), s.target_edges.size(), stamp};
-  detail::PathSampler sampler({s.tasks.data(), s.rooms.data(), s.anchorings.data()});
+  detail::PathSampler sampler({s.tasks.data(), s.rooms.data()});
   sampler.sample(plan, s.values.data());
   sampler.run();
   Transform target_T_source;

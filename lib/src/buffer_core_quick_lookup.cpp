@@ -163,13 +163,12 @@ double magnitudeOf(const PathPlan& plan, const Transform* const* values) {
   return sum;
 }
 
-// Interpolation tasks, rooms and anchorings for the steps of `Paths` quick paths.
+// Interpolation tasks and rooms for the steps of `Paths` quick paths.
 template <std::size_t Paths>
 struct QuickSamplerRoom {
   detail::InterpolationTask tasks[Paths * kMostSteps];
   detail::TransformRoom rooms[Paths * kMostSteps];
-  detail::Anchoring anchorings[Paths * kMostSteps];
-  detail::SamplerStorage storage() { return {tasks, rooms, anchorings}; }
+  detail::SamplerStorage storage() { return {tasks, rooms}; }
 };
 
 }  // namespace

@@ -5,7 +5,6 @@
 #include <new>
 
 #include "batch_interpolation.hpp"
-#include "compose.hpp"
 #include "path_product.hpp"
 #include "time_cache.hpp"
 
@@ -39,17 +38,10 @@ struct TransformRoom {
   alignas(Transform) unsigned char bytes[sizeof(Transform)];
 };
 
-/// A step value to compose with the static chain above it once interpolated.
-struct Anchoring {
-  const Transform* anchor;
-  Transform* value;
-};
-
-/// Storage a PathSampler works in: a task, a room and an anchoring for every step sampled.
+/// Storage a PathSampler works in: a task and a room for every step sampled.
 struct SamplerStorage {
   InterpolationTask* tasks;
   TransformRoom* rooms;
-  Anchoring* anchorings;
 };
 
 /// The values of the steps of one or more plans, with the interpolations they need run in one
@@ -79,27 +71,20 @@ class PathSampler {
       }
       Transform* out = ::new (static_cast<void*>(storage_.rooms[rooms_++].bytes)) Transform;
       values[i] = out;
-      if (!span.newer) {
-        *out = composed(*step.anchor, *span.older);
-        continue;
-      }
-      storage_.tasks[tasks_++] = {span.older, span.newer, span.ratio, out, span.arc_squared};
-      if (step.anchor) storage_.anchorings[anchorings_++] = {step.anchor, out};
+      // An exact sample to anchor is a task at ratio 0, so that every anchor is composed in
+      // the batch's wide instructions.
+      storage_.tasks[tasks_++] =
+          span.newer ? InterpolationTask{span.older, span.newer, span.ratio, out,
+                                         span.arc_squared, step.anchor}
+                     : InterpolationTask{span.older, span.older, 0.0, out, 0.0, step.anchor};
     }
   }
-  void run() const {
-    interpolateBatch(storage_.tasks, tasks_);
-    for (std::size_t i = 0; i < anchorings_; ++i) {
-      const Anchoring& anchoring = storage_.anchorings[i];
-      *anchoring.value = composed(*anchoring.anchor, *anchoring.value);
-    }
-  }
+  void run() const { interpolateBatch(storage_.tasks, tasks_); }
 
  private:
   SamplerStorage storage_;
   std::size_t tasks_ = 0;
   std::size_t rooms_ = 0;
-  std::size_t anchorings_ = 0;
 };
 
 /// The plan's target_T_source from the value of each of its steps (sampled by PathSampler).
