@@ -241,8 +241,22 @@ inline std::size_t TimeCache::indexAtOrBefore(std::int64_t stamp) const {
 }
 
 inline SampleSpan TimeCache::spanWithin(std::int64_t stamp, std::size_t hint) const {
-  const bool hint_holds = hint != kNoHint && stampAt(hint) <= stamp && stamp < stampAt(hint + 1);
-  const std::size_t index = hint_holds ? hint : indexAtOrBefore(stamp);
+  if (hint != kNoHint) {
+    // The hinted pair's slots and stamps serve the span too, found once.
+    const std::size_t at = slot(hint);
+    const std::size_t next = at + 1 == samples_.size() ? 0 : at + 1;
+    const std::int64_t older_stamp = samples_.stamp(at);
+    const std::int64_t newer_stamp = samples_.stamp(next);
+    if (older_stamp <= stamp && stamp < newer_stamp) {
+      if (older_stamp == stamp)
+        return SampleSpan{&samples_.transform(at), nullptr, 0.0, newest_parent_};
+      return SampleSpan{
+          &samples_.transform(at), &samples_.transform(next),
+          static_cast<double>(stamp - older_stamp) / static_cast<double>(newer_stamp - older_stamp),
+          newest_parent_, samples_.arc(at)};
+    }
+  }
+  const std::size_t index = indexAtOrBefore(stamp);
   return spanFrom(index, stamp, newest_parent_, stampAt(index) == stamp);
 }
 
