@@ -72,7 +72,7 @@ class PathSampler {
       Transform* out = ::new (static_cast<void*>(storage_.rooms[rooms_++].bytes)) Transform;
       values[i] = out;
       // An exact sample to anchor is a task at ratio 0, so that every anchor is composed in
-      // the batch's wide instructions.
+      // the batch's wide instructions: 2-4 % of each lookup on pr2 in buffer_core_bench.
       storage_.tasks[tasks_++] =
           span.newer ? InterpolationTask{span.older, span.newer, span.ratio, out,
                                          span.arc_squared, step.anchor}
