@@ -168,7 +168,11 @@ class TimeCache {
   SampleSpan spanFrom(std::size_t index, std::int64_t stamp, FrameId parent, bool exact) const {
     const std::size_t at = slot(index);
     if (exact) return SampleSpan{&samples_.transform(at), nullptr, 0.0, parent};
-    const std::size_t next = slot(index + 1);
+    return spanBetween(at, slot(index + 1), stamp, parent);
+  }
+  /// The span at `stamp`, strictly between the samples in slots `at` and `next`.
+  SampleSpan spanBetween(std::size_t at, std::size_t next, std::int64_t stamp,
+                         FrameId parent) const {
     const std::int64_t older_stamp = samples_.stamp(at);
     return SampleSpan{&samples_.transform(at), &samples_.transform(next),
                       static_cast<double>(stamp - older_stamp) /
@@ -249,12 +253,10 @@ inline SampleSpan TimeCache::spanWithin(std::int64_t stamp, std::size_t hint) co
     const std::int64_t older_stamp = samples_.stamp(at);
     const std::int64_t newer_stamp = samples_.stamp(next);
     if (older_stamp <= stamp && stamp < newer_stamp) {
-      if (older_stamp == stamp)
+      if (older_stamp == stamp) {
         return SampleSpan{&samples_.transform(at), nullptr, 0.0, newest_parent_};
-      return SampleSpan{
-          &samples_.transform(at), &samples_.transform(next),
-          static_cast<double>(stamp - older_stamp) / static_cast<double>(newer_stamp - older_stamp),
-          newest_parent_, samples_.arc(at)};
+      }
+      return spanBetween(at, next, stamp, newest_parent_);
     }
   }
   const std::size_t index = indexAtOrBefore(stamp);
