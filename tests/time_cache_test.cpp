@@ -123,7 +123,7 @@ std::size_t expectSpanWithinAgreesWithFind(const TimeCache& cache,
                                  last_hint,
                                  TimeCache::kNoHint,
                                  guess,
-                                 cache.hintNearNewest(stamp)};
+                                 cache.hintNearNewest()};
     for (const std::size_t hint : hints) {
       EXPECT_TRUE(sameSpan(cache.spanWithin(stamp, hint), expected))
           << "at " << stamp << " from hint " << hint;

@@ -136,17 +136,13 @@ bool planPath(const RootPaths& root_paths, const FrameTable& frames, FrameId tar
   if (stamp == 0 && common_newest.any_dynamic) {
     at = common_newest.stamp;
     // The samples near the newest of every step load at once, before any is read.
-    if (prefetch) {
-      for (std::size_t i = 0; i < count; ++i) {
-        if (steps[i].cache) steps[i].cache->prefetchNewest();
-      }
-    }
     for (std::size_t i = 0; i < count; ++i) {
       PlanStep& step = steps[i];
       if (!step.cache) continue;
       // An edge whose newest sample is stamped 0 sets no bound on `at`, and may lack data there.
       if (at < step.cache->singleParentFrom() || at > step.cache->newestStamp()) return false;
-      step.hint = step.cache->hintNearNewest(at);
+      if (prefetch) step.cache->prefetchNewest();
+      step.hint = step.cache->hintNearNewest();
     }
   }
   // Where the target is on the source's way up, the climb ends there; else it goes on.

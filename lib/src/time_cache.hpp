@@ -124,12 +124,10 @@ class TimeCache {
   /// returns where it guessed they are, as a hint for spanWithin(). For a dynamic edge with
   /// data at `stamp`.
   std::size_t prefetch(std::int64_t stamp) const;
-  /// A hint for spanWithin() at a time near the newest sample (as latest-common-time lookups ask):
-  /// the sample before the newest when `stamp` falls after it, else none.
-  std::size_t hintNearNewest(std::int64_t stamp) const {
-    return count_ >= 2 && stamp < newest_stamp_ && stampAt(count_ - 2) <= stamp ? count_ - 2
-                                                                                : kNoHint;
-  }
+  /// A hint for spanWithin() at a time near the newest sample (as latest-common-time lookups
+  /// ask): the sample before the newest, which spanWithin() checks, so that planning reads no
+  /// sample.
+  std::size_t hintNearNewest() const { return count_ >= 2 ? count_ - 2 : kNoHint; }
   static constexpr std::size_t kNoHint = static_cast<std::size_t>(-1);
   /// Starts loading the two newest samples, which hintNearNewest() and a lookup near the
   /// newest time read.
