@@ -432,7 +432,7 @@ TEST(RootPaths, DynamicStepIntoAStaticChainIsAnchored) {
   ASSERT_EQ(path.size, 2u);
   EXPECT_FALSE(path.steps[0].anchored());
   EXPECT_EQ(path.steps[0].next, lone_static);
-  EXPECT_EQ(path.steps[1].fixed, &records[lone_static].cache.staticValue().transform);
+  EXPECT_EQ(path.steps[1].fixed, &records[lone_static].cache.staticTransform());
   EXPECT_EQ(path.steps[1].next, world);
 }
 

@@ -294,7 +294,7 @@ TEST(TimeCache, SetStaticDropsTheHistory) {
   EXPECT_TRUE(cache.isStatic());
   EXPECT_EQ(cache.size(), 1u);
   EXPECT_FALSE(cache.changesParent());
-  EXPECT_EQ(cache.staticValue().parent, kOtherParent);
+  EXPECT_EQ(cache.staticParent(), kOtherParent);
   for (const std::int64_t stamp :
        {std::numeric_limits<std::int64_t>::min(), std::int64_t{0}, std::int64_t{100},
         std::int64_t{150}, std::numeric_limits<std::int64_t>::max()}) {

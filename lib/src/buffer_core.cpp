@@ -147,11 +147,11 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
   const bool changed_parent = record.cache.changesParent();
   if (is_static) {
     const bool unchanged =
-        was_static && record.cache.staticValue().parent == parent_id &&
-        record.cache.staticValue().transform.translation == value.translation &&
-        record.cache.staticValue().transform.rotation.coeffs() == value.rotation.coeffs();
+        was_static && record.cache.staticParent() == parent_id &&
+        record.cache.staticTransform().translation == value.translation &&
+        record.cache.staticTransform().rotation.coeffs() == value.rotation.coeffs();
     if (!unchanged) {
-      if (!was_static || record.cache.staticValue().parent != parent_id) noteShapeChange(child_id);
+      if (!was_static || record.cache.staticParent() != parent_id) noteShapeChange(child_id);
       record.cache.setStatic(parent_id, value);
       if (known_child == kNoFrame) {
         // A frame new to the buffer has nothing below it: only its own chain is new.

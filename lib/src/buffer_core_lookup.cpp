@@ -54,8 +54,8 @@ void stepUp(const FrameTable& frames, FrameId frame, std::int64_t stamp, PathEdg
   edge.child = frame;
   edge.status = SampleStatus::kOk;
   if (cache.isStatic()) {
-    edge.fixed = &cache.staticValue().transform;
-    edge.parent = cache.staticValue().parent;
+    edge.fixed = &cache.staticTransform();
+    edge.parent = cache.staticParent();
   } else {
     edge.fixed = nullptr;
     edge.parent = stamp == 0 ? cache.newestParent() : cache.parentAt(stamp, edge.status);
@@ -374,7 +374,7 @@ void BufferCore::Impl::computeStaticChains() {
     while (frames_[frame].static_top == kUnknown && frames_[frame].cache.isStatic() &&
            pending.size() <= frames_.size()) {
       pending.push_back(frame);
-      frame = frames_[frame].cache.staticValue().parent;
+      frame = frames_[frame].cache.staticParent();
     }
     const bool looped = pending.size() > frames_.size();
     if (frames_[frame].static_top == kUnknown) {
@@ -385,13 +385,12 @@ void BufferCore::Impl::computeStaticChains() {
     for (auto it = pending.rbegin(); it != pending.rend(); ++it) {
       FrameRecord& record = frames_[*it];
       if (record.static_top != kUnknown) continue;
-      const detail::EdgeValue& edge = record.cache.staticValue();
-      const FrameRecord& parent = frames_[edge.parent];
+      const FrameRecord& parent = frames_[record.cache.staticParent()];
       if (looped || parent.static_top == *it) {
         record.static_top = *it;
         record.static_top_T_frame = Transform::identity();
       } else {
-        continueStaticChain(record, parent, edge.transform);
+        continueStaticChain(record, parent, record.cache.staticTransform());
       }
     }
     pending.clear();

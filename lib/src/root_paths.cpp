@@ -14,8 +14,8 @@ RootStep stepFrom(const FrameTable& frames, FrameId frame) {
     return step;
   }
   if (record.cache.isStatic()) {
-    step.fixed = &record.cache.staticValue().transform;
-    step.parent = step.next = record.cache.staticValue().parent;
+    step.fixed = &record.cache.staticTransform();
+    step.parent = step.next = record.cache.staticParent();
     return step;
   }
   step.cache = &record.cache;

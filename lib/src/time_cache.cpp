@@ -7,7 +7,8 @@ namespace lcmtf::detail {
 void TimeCache::setStatic(FrameId parent, const Transform& transform) {
   samples_.clear();
   parents_.clear();
-  static_value_ = EdgeValue{parent, transform};
+  static_parent_ = parent;
+  static_transform_ = transform;
   head_ = 0;
   count_ = 1;
   is_static_ = true;
@@ -33,7 +34,7 @@ void TimeCache::refreshEnds() {
   }
   if (is_static_) {
     oldest_stamp_ = newest_stamp_ = 0;
-    oldest_parent_ = newest_parent_ = static_value_.parent;
+    oldest_parent_ = newest_parent_ = static_parent_;
     samples_per_utime_ = 0.0;
     return;
   }
@@ -207,7 +208,7 @@ std::size_t TimeCache::searchNear(std::int64_t stamp, std::size_t guess) const {
 FrameId TimeCache::parentAt(std::int64_t stamp, SampleStatus& status) const {
   if (is_static_) {
     status = SampleStatus::kOk;
-    return static_value_.parent;
+    return static_parent_;
   }
   if (count_ == 0) {
     status = SampleStatus::kEmpty;

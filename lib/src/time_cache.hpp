@@ -14,12 +14,6 @@ namespace lcmtf::detail {
 using FrameId = std::uint32_t;
 constexpr FrameId kNoFrame = 0;
 
-/// An edge's value: the pose of the child in `parent`.
-struct EdgeValue {
-  FrameId parent = kNoFrame;
-  Transform transform;
-};
-
 /// One sample to store: the edge's value at `stamp` (utime).
 struct EdgeSample {
   std::int64_t stamp = 0;
@@ -94,8 +88,9 @@ class TimeCache {
   /// Drops the history of a dynamic edge; a static edge keeps its value.
   void clearHistory();
 
-  /// The value of a static edge.
-  const EdgeValue& staticValue() const { return static_value_; }
+  /// A static edge's parent and value: the pose of the child in that parent.
+  FrameId staticParent() const { return static_parent_; }
+  const Transform& staticTransform() const { return static_transform_; }
   std::int64_t oldestStamp() const { return oldest_stamp_; }
   /// The oldest stamp from which spanWithin() may be asked for this edge's samples: the oldest
   /// sample's when all the samples have one parent, else none (the int64 maximum).
@@ -204,6 +199,7 @@ class TimeCache {
   FrameId oldest_parent_ = kNoFrame;
   FrameId newest_parent_ = kNoFrame;
   FrameId only_parent_ = kNoFrame;
+  FrameId static_parent_ = kNoFrame;
   bool is_static_ = false;
   // The newest stamp at which the parent differs from the sample before; samples up to the
   // oldest one all share a parent when this is not newer than the oldest.
@@ -211,7 +207,9 @@ class TimeCache {
   // A parent per sample, once the edge has had more than one; until then every sample's parent
   // is only_parent_.
   UnfilledArray<FrameId> parents_;
-  EdgeValue static_value_;
+  // Its parent, static_parent_, is kept with the other frame ids, where it fills padding that
+  // Transform's alignment would leave beside it here.
+  Transform static_transform_;
 };
 
 // Where `stamp` would be if the samples were evenly spaced, as most publishers space them
@@ -263,7 +261,7 @@ inline SampleSpan TimeCache::spanWithin(std::int64_t stamp, std::size_t hint) co
 
 inline SampleStatus TimeCache::find(std::int64_t stamp, SampleSpan& span) const {
   if (is_static_) {
-    span = SampleSpan{&static_value_.transform, nullptr, 0.0, static_value_.parent};
+    span = SampleSpan{&static_transform_, nullptr, 0.0, static_parent_};
     return SampleStatus::kOk;
   }
   if (count_ == 0) return SampleStatus::kEmpty;

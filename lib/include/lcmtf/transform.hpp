@@ -6,7 +6,13 @@ namespace lcmtf {
 
 /// A rigid transform parent_T_child: rotation (unit quaternion) then translation.
 /// Compose so the frame names cancel: a_T_c = a_T_b * b_T_c.
-struct Transform {
+///
+/// Aligned to 32 bytes whatever instructions Eigen vectorizes with: Eigen aligns a quaternion
+/// to 16 bytes under SSE and to 32 under AVX, so without this a program built with -mavx or
+/// -march=native would lay out TransformStamped (and every struct holding a Transform)
+/// differently from a library built for plain x86-64, and the two would read each other's
+/// fields at the wrong offsets.
+struct alignas(32) Transform {
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
 
@@ -48,6 +54,9 @@ struct Transform {
   /// `tolerance` radians (q and -q are the same rotation).
   bool isApprox(const Transform& other, double tolerance = 1e-12) const;
 };
+
+static_assert(sizeof(Transform) == 64 && alignof(Transform) == 32,
+              "lcmtf::Transform must have one layout in every program that uses the library");
 
 /// Shortest-arc spherical interpolation: `a` at ratio 0, `b` (or -b) at ratio 1, unit length
 /// between.
