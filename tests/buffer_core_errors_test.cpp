@@ -412,5 +412,20 @@ TEST_F(BufferCoreErrors, CanTransformSucceedsWhereTheLookupSucceeds) {
   EXPECT_NO_THROW(buffer_.lookupTransform("world", "hand", at(2)));
 }
 
+TEST_F(BufferCoreErrors, AFrameInItselfIsTheIdentityWhetherOrNotItIsKnownButNoNameIsNoFrame) {
+  for (const auto& [target, source] : {std::pair<std::string, std::string>{"hand", "/hand"},
+                                       {"/ghost", "ghost"}}) {
+    EXPECT_TRUE(buffer_.canTransform(target, source, at(2))) << target << " " << source;
+    const TransformStamped t = buffer_.lookupTransform(target, source, at(2));
+    EXPECT_TRUE(t.transform.isApprox(Transform::identity(), 0.0)) << target << " " << source;
+    EXPECT_EQ(t.parent_frame, t.child_frame);
+  }
+  std::string why;
+  EXPECT_FALSE(buffer_.canTransform("/", "", at(2), &why));
+  EXPECT_THAT(why, HasSubstr("invalid"));
+  EXPECT_FALSE(buffer_.canTransform("ghost", "spectre", at(2), &why));
+  EXPECT_THAT(why, HasSubstr("ghost"));
+}
+
 }  // namespace
 }  // namespace lcmtf

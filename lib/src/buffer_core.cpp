@@ -291,8 +291,13 @@ std::string timeTravelWhat(const std::string& target, const std::string& source,
   return "time-travel lookup of '" + source + "' in '" + target + "' through '" + fixed + "'";
 }
 
-// tf2 answers a lookup from a frame to itself with identity without checking the frame.
-bool sameFrame(const std::string& target, const std::string& source) {
+// tf2 answers a lookup from a frame to itself with identity without checking the frame. Known
+// frames compare by id; only two unknown names are compared, which the usual lookup, of two
+// known frames, never does.
+bool sameFrame(FrameId target_id, FrameId source_id, const std::string& target,
+               const std::string& source) {
+  if (target_id != source_id) return false;
+  if (target_id != kNoFrame) return true;
   const std::string_view a = stripLeadingSlash(target);
   return !a.empty() && a == stripLeadingSlash(source);
 }
@@ -302,16 +307,14 @@ bool sameFrame(const std::string& target, const std::string& source) {
 TransformStamped BufferCore::lookupTransform(const std::string& target, const std::string& source,
                                              TimePoint time) const {
   SharedLock lock(impl_->lock_);
-  if (sameFrame(target, source)) {
-    const FrameId id = impl_->idOf(stripLeadingSlash(target));
-    std::int64_t stamp = toUtime(time);
-    if (stamp == 0 && id != kNoFrame) impl_->latestCommonTime(id, id, stamp);
-    const std::string name(stripLeadingSlash(target));
-    return TransformStamped{fromUtime(stamp), name, name, Transform::identity()};
-  }
   FrameId target_id = impl_->idOf(stripLeadingSlash(target));
   FrameId source_id = impl_->idOf(stripLeadingSlash(source));
   std::int64_t stamp = toUtime(time);
+  if (sameFrame(target_id, source_id, target, source)) {
+    if (stamp == 0 && target_id != kNoFrame) impl_->latestCommonTime(target_id, target_id, stamp);
+    const std::string name(stripLeadingSlash(target));
+    return TransformStamped{fromUtime(stamp), name, name, Transform::identity()};
+  }
   Transform value;
   // The usual case first, with no failure record to fill in.
   if (target_id != kNoFrame && source_id != kNoFrame &&
@@ -405,11 +408,11 @@ TransformStamped BufferCore::lookupTransform(const std::string& target, TimePoin
 bool BufferCore::canTransform(const std::string& target, const std::string& source, TimePoint time,
                               std::string* why) const {
   SharedLock lock(impl_->lock_);
-  if (sameFrame(target, source)) return true;
-  FrameId target_id = kNoFrame;
-  FrameId source_id = kNoFrame;
-  const LookupFailure unresolved = impl_->resolvePair(target, source, target_id, source_id);
-  if (unresolved) {
+  FrameId target_id = impl_->idOf(stripLeadingSlash(target));
+  FrameId source_id = impl_->idOf(stripLeadingSlash(source));
+  if (sameFrame(target_id, source_id, target, source)) return true;
+  if (target_id == kNoFrame || source_id == kNoFrame) {
+    const LookupFailure unresolved = impl_->resolvePair(target, source, target_id, source_id);
     if (why) *why = impl_->describe(unresolved, lookupWhat(target, source));
     return false;
   }
