@@ -5,6 +5,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "frame_name_index.hpp"
+
 namespace lcmtf::detail {
 
 /// The names of the senders that set the buffer's edges, each kept only while some edge names
@@ -15,7 +17,7 @@ class AuthorityTable {
   /// The id of `name`, added when new; it stays only once use() counts an edge for it.
   std::uint32_t idOf(const std::string& name) {
     // Most inserts come from the same sender as the one before.
-    if (last_ != 0 && entries_[last_ - 1].name == name) return last_;
+    if (last_ != 0 && FrameNameIndex::sameName(entries_[last_ - 1].name, name)) return last_;
     auto found = ids_.find(name);
     if (found == ids_.end()) found = ids_.emplace(name, add(name)).first;
     last_ = found->second;

@@ -57,7 +57,9 @@ FrameId BufferCore::Impl::idOf(std::string_view name) const { return ids_.find(n
 // saves a load from a random place in the name index, which memory then answers.
 FrameId BufferCore::Impl::knownChild(std::string_view name) const {
   const FrameId predicted = frames_[last_inserted_].next_inserted;
-  return predicted != kNoFrame && nameOf(predicted) == name ? predicted : idOf(name);
+  return predicted != kNoFrame && detail::FrameNameIndex::sameName(nameOf(predicted), name)
+             ? predicted
+             : idOf(name);
 }
 
 void BufferCore::Impl::noteInserted(FrameId child) {
@@ -141,7 +143,9 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
   // An edge keeps its parent from one sample to the next: compare before hashing the name.
   const FrameId usual_parent = frames_[child_id].cache.newestParent();
   const FrameId parent_id =
-      usual_parent != kNoFrame && nameOf(usual_parent) == parent ? usual_parent : addFrame(parent);
+      usual_parent != kNoFrame && detail::FrameNameIndex::sameName(nameOf(usual_parent), parent)
+          ? usual_parent
+          : addFrame(parent);
   FrameRecord& record = frames_[child_id];
   const bool was_static = record.cache.isStatic();
   const bool changed_parent = record.cache.changesParent();

@@ -62,6 +62,12 @@ class FrameNameIndex {
     return finish(hash + ends + middle);
   }
 
+  /// Equality of two names, inline (see sameBytes()): inserts compare each name with the one
+  /// they expect before hashing it.
+  static bool sameName(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && sameBytes(a.data(), b.data(), a.size());
+  }
+
   /// Equality of two names of equal size, inline: names are short, and a call to memcmp costs
   /// more than comparing them.
   static bool sameBytes(const char* a, const char* b, std::size_t size) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "frame_name_index.hpp"
 #include "lcmtf/frame_name.hpp"
 
 namespace lcmtf {
@@ -32,7 +33,7 @@ InsertRejection validateTransform(const TransformStamped& transform, Transform& 
              edgeName(transform);
     return InsertRejection::kEmptyFrameName;
   }
-  if (parent == child) {
+  if (detail::FrameNameIndex::sameName(parent, child)) {
     reason = "frame '" + std::string(child) + "' cannot be its own parent";
     return InsertRejection::kSelfParented;
   }
