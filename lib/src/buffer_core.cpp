@@ -124,29 +124,29 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
   const std::int64_t stamp = toUtime(transform.stamp);
   // Refuse a sample that is too old before adding any frame, so the refusal changes nothing.
   const FrameId known_child = knownChild(child);
-  // Records never move as frames are added (FrameTable).
-  FrameRecord* const known = known_child != kNoFrame ? &frames_[known_child] : nullptr;
-  if (!is_static && known && known->cache.isTooOld(stamp, cache_time_)) {
+  if (!is_static && known_child != kNoFrame &&
+      frames_[known_child].cache.isTooOld(stamp, cache_time_)) {
     reason = edgeName(transform) + " is older than the history kept: the newest sample is at " +
-             toString(fromUtime(known->cache.newestStamp())) +
+             toString(fromUtime(frames_[known_child].cache.newestStamp())) +
              " and the cache time is " + toString(Duration(cache_time_));
     return InsertRejection::kOlderThanHistory;
   }
-  if (!is_static && known && known->cache.isFullAndOlder(stamp, most_samples_per_edge_)) {
+  if (!is_static && known_child != kNoFrame &&
+      frames_[known_child].cache.isFullAndOlder(stamp, most_samples_per_edge_)) {
     reason = edgeName(transform) + " already holds its most samples (" +
              std::to_string(most_samples_per_edge_) + "), all newer than this one at " +
              toString(transform.stamp);
     return InsertRejection::kEdgeFull;
   }
-  const FrameId child_id = known ? known_child : addFrame(child);
-  FrameRecord& record = known ? *known : frames_[child_id];
+  const FrameId child_id = known_child != kNoFrame ? known_child : addFrame(child);
   noteInserted(child_id);
   // An edge keeps its parent from one sample to the next: compare before hashing the name.
-  const FrameId usual_parent = record.cache.newestParent();
+  const FrameId usual_parent = frames_[child_id].cache.newestParent();
   const FrameId parent_id =
       usual_parent != kNoFrame && detail::FrameNameIndex::sameName(nameOf(usual_parent), parent)
           ? usual_parent
           : addFrame(parent);
+  FrameRecord& record = frames_[child_id];
   const bool was_static = record.cache.isStatic();
   const bool changed_parent = record.cache.changesParent();
   if (is_static) {
