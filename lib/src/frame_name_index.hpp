@@ -24,10 +24,7 @@ class FrameNameIndex {
       const Slot slot = slots_[i];
       if (slot.id == kNoFrame) return kNoFrame;
       if (slot.tag != tag) continue;
-      const std::string_view stored = names_[slot.id];
-      if (stored.size() == name.size() && sameBytes(stored.data(), name.data(), name.size())) {
-        return slot.id;
-      }
+      if (sameName(names_[slot.id], name)) return slot.id;
     }
   }
 
@@ -62,8 +59,8 @@ class FrameNameIndex {
     return finish(hash + ends + middle);
   }
 
-  /// Equality of two names, inline (see sameBytes()): inserts compare each name with the one
-  /// they expect before hashing it.
+  /// Equality of two names, inline (see sameBytes()), as find() compares them and as inserts
+  /// compare each name with the one they expect before hashing it.
   static bool sameName(std::string_view a, std::string_view b) {
     return a.size() == b.size() && sameBytes(a.data(), b.data(), a.size());
   }
