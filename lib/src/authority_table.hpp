@@ -5,7 +5,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "frame_name_index.hpp"
+#include "name_words.hpp"
 
 namespace lcmtf::detail {
 
@@ -17,7 +17,7 @@ class AuthorityTable {
   /// The id of `name`, added when new; it stays only once use() counts an edge for it.
   std::uint32_t idOf(const std::string& name) {
     // Most inserts come from the same sender as the one before.
-    if (last_ != 0 && FrameNameIndex::sameName(entries_[last_ - 1].name, name)) return last_;
+    if (last_ != 0 && sameName(entries_[last_ - 1].name, name)) return last_;
     auto found = ids_.find(name);
     if (found == ids_.end()) found = ids_.emplace(name, add(name)).first;
     last_ = found->second;

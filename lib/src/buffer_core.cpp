@@ -57,9 +57,8 @@ FrameId BufferCore::Impl::idOf(std::string_view name) const { return ids_.find(n
 // saves a load from a random place in the name index, which memory then answers.
 FrameId BufferCore::Impl::knownChild(std::string_view name) const {
   const FrameId predicted = frames_[last_inserted_].next_inserted;
-  return predicted != kNoFrame && detail::FrameNameIndex::sameName(nameOf(predicted), name)
-             ? predicted
-             : idOf(name);
+  return predicted != kNoFrame && detail::sameName(nameOf(predicted), name) ? predicted
+                                                                            : idOf(name);
 }
 
 void BufferCore::Impl::noteInserted(FrameId child) {
@@ -143,9 +142,8 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
   // An edge keeps its parent from one sample to the next: compare before hashing the name.
   const FrameId usual_parent = frames_[child_id].cache.newestParent();
   const FrameId parent_id =
-      usual_parent != kNoFrame && detail::FrameNameIndex::sameName(nameOf(usual_parent), parent)
-          ? usual_parent
-          : addFrame(parent);
+      usual_parent != kNoFrame && detail::sameName(nameOf(usual_parent), parent) ? usual_parent
+                                                                                 : addFrame(parent);
   FrameRecord& record = frames_[child_id];
   const bool was_static = record.cache.isStatic();
   const bool changed_parent = record.cache.changesParent();
@@ -166,9 +164,8 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
     }
   } else {
     const FrameId parent_before = record.cache.newestParent();
-    const detail::InsertOutcome outcome =
-        record.cache.insert(detail::EdgeSample{stamp, parent_id, value}, cache_time_,
-                            most_samples_per_edge_);
+    const detail::InsertOutcome outcome = record.cache.insert(
+        detail::EdgeSample{stamp, parent_id, value}, cache_time_, most_samples_per_edge_);
     if (outcome == detail::InsertOutcome::kReplaced) ++statistics_.replaced;
     if (outcome == detail::InsertOutcome::kAddedDroppingOldest) ++statistics_.dropped_for_room;
     if (was_static) computeStaticChains();

@@ -1,11 +1,11 @@
 #pragma once
 
 #include <cstdint>
-#include <cstring>
 #include <string_view>
 #include <vector>
 
 #include "large_arrays.hpp"
+#include "name_words.hpp"
 #include "time_cache.hpp"
 
 namespace lcmtf::detail {
@@ -44,64 +44,23 @@ class FrameNameIndex {
     const std::size_t size = name.size();
     const char* bytes = name.data();
     const std::uint64_t hash = size * kMultiplier;
-    if (size <= 8) return finish(hash + mix(shortWord(bytes, size), kSeed));
-    const std::uint64_t ends = mix(word(bytes), kSeed) + mix(word(bytes + size - 8), ~kSeed);
+    if (size <= 8) return finish(hash + mix(shortNameWord(bytes, size), kSeed));
+    const std::uint64_t ends =
+        mix(nameWord(bytes), kSeed) + mix(nameWord(bytes + size - 8), ~kSeed);
     if (size <= 16) return finish(hash + ends);
     if (size <= 32) {
-      return finish(hash + ends + mix(word(bytes + 8), kSeed + kMultiplier) +
-                    mix(word(bytes + size - 16), kSeed - kMultiplier));
+      return finish(hash + ends + mix(nameWord(bytes + 8), kSeed + kMultiplier) +
+                    mix(nameWord(bytes + size - 16), kSeed - kMultiplier));
     }
     // Each word's seed depends on its place, so that words trading places change the hash.
     std::uint64_t middle = 0;
     for (std::size_t offset = 8; offset + 8 < size; offset += 8) {
-      middle += mix(word(bytes + offset), kSeed + offset * kMultiplier);
+      middle += mix(nameWord(bytes + offset), kSeed + offset * kMultiplier);
     }
     return finish(hash + ends + middle);
   }
 
-  /// Equality of two names, inline (see sameBytes()), as find() compares them and as inserts
-  /// compare each name with the one they expect before hashing it.
-  static bool sameName(std::string_view a, std::string_view b) {
-    return a.size() == b.size() && sameBytes(a.data(), b.data(), a.size());
-  }
-
-  /// Equality of two names of equal size, inline: names are short, and a call to memcmp costs
-  /// more than comparing them.
-  static bool sameBytes(const char* a, const char* b, std::size_t size) {
-    if (size <= 8) return shortWord(a, size) == shortWord(b, size);
-    std::uint64_t differ = (word(a) ^ word(b)) | (word(a + size - 8) ^ word(b + size - 8));
-    if (size <= 16) return differ == 0;
-    if (size <= 32) {
-      differ |= (word(a + 8) ^ word(b + 8)) | (word(a + size - 16) ^ word(b + size - 16));
-      return differ == 0;
-    }
-    for (std::size_t offset = 8; offset + 8 < size; offset += 8) {
-      differ |= word(a + offset) ^ word(b + offset);
-    }
-    return differ == 0;
-  }
-
  private:
-  static std::uint64_t word(const char* bytes) {
-    std::uint64_t value;
-    std::memcpy(&value, bytes, 8);
-    return value;
-  }
-  // Up to 8 bytes as one word, from at most two overlapping reads, without a call to memcpy.
-  static std::uint64_t shortWord(const char* bytes, std::size_t size) {
-    if (size >= 4) {
-      std::uint32_t low;
-      std::uint32_t high;
-      std::memcpy(&low, bytes, 4);
-      std::memcpy(&high, bytes + size - 4, 4);
-      return (std::uint64_t{high} << 32) | low;
-    }
-    if (size == 0) return 0;
-    const auto byte = [&](std::size_t i) {
-      return std::uint64_t{static_cast<unsigned char>(bytes[i])};
-    };
-    return byte(0) | byte(size / 2) << 8 | byte(size - 1) << 16;
-  }
   static constexpr std::uint64_t kMultiplier = 0x9e3779b97f4a7c15ull;
   static constexpr std::uint64_t kSeed = 0xa0761d6478bd642full;
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "frame_name_index.hpp"
 #include "lcmtf/frame_name.hpp"
+#include "name_words.hpp"
 
 namespace lcmtf {
 
@@ -33,7 +33,7 @@ InsertRejection validateTransform(const TransformStamped& transform, Transform& 
              edgeName(transform);
     return InsertRejection::kEmptyFrameName;
   }
-  if (detail::FrameNameIndex::sameName(parent, child)) {
+  if (detail::sameName(parent, child)) {
     reason = "frame '" + std::string(child) + "' cannot be its own parent";
     return InsertRejection::kSelfParented;
   }
