@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <thread>
@@ -31,7 +32,7 @@ constexpr std::size_t kWriterFrames = 60;
 constexpr auto kWriterPeriod = std::chrono::milliseconds(1);
 constexpr auto kConcurrentWindow = std::chrono::milliseconds(400);
 constexpr int kConcurrentRounds = 5;
-constexpr int kRounds = 3;
+constexpr int kDefaultRounds = 3;
 
 const std::vector<Workload>& workloads() {
   static const std::vector<Workload> all = {makePr2Workload(), makeDeepChainWorkload(),
@@ -362,6 +363,28 @@ void printAgreement(std::size_t shape) {
 }
 #endif
 
+// Takes --rounds=N out of the arguments, leaving the rest to the benchmark library; false when
+// N is not a whole number from 1 to 100.
+bool takeRounds(int& argc, char** argv, int& rounds) {
+  const std::string flag = "--rounds=";
+  int kept = 1;
+  bool good = true;
+  for (int i = 1; i < argc; ++i) {
+    const std::string argument = argv[i];
+    if (argument.rfind(flag, 0) != 0) {
+      argv[kept++] = argv[i];
+      continue;
+    }
+    const std::string value = argument.substr(flag.size());
+    char* end = nullptr;
+    const long parsed = std::strtol(value.c_str(), &end, 10);
+    good = good && !value.empty() && *end == '\0' && parsed >= 1 && parsed <= 100;
+    if (good) rounds = static_cast<int>(parsed);
+  }
+  argc = kept;
+  return good;
+}
+
 }  // namespace
 }  // namespace bench
 
@@ -372,6 +395,11 @@ int main(int argc, char** argv) {
   bool whole_run = true;
   for (int i = 1; i < argc; ++i) {
     if (std::string(argv[i]).rfind("--benchmark_filter", 0) == 0) whole_run = false;
+  }
+  int rounds = kDefaultRounds;
+  if (!takeRounds(argc, argv, rounds)) {
+    std::fprintf(stderr, "buffer_core_bench: --rounds takes a whole number from 1 to 100\n");
+    return 1;
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
@@ -384,10 +412,10 @@ int main(int argc, char** argv) {
 #endif
   }
   std::printf("\n");
-  // Each kind runs kRounds times, the two libraries taking turns, and the summary takes each
+  // Each kind runs `rounds` times, the two libraries taking turns, and the summary takes each
   // one's fastest round: a burst of load from elsewhere on the machine then slows one round,
   // not one library. The spread over the rounds is printed beside it.
-  for (int round = 0; round < kRounds; ++round) {
+  for (int round = 0; round < rounds; ++round) {
     for (std::size_t shape = 0; shape < workloads().size(); ++shape) {
       for (const Timed kind : kTimedKinds) {
         registerTimed<LcmtfSubject>(shape, kind);
