@@ -9,6 +9,7 @@
 #include "compose.hpp"
 #include "lcmtf/printable.hpp"
 #include "lcmtf/transform_validation.hpp"
+#include "name_words.hpp"
 
 namespace lcmtf {
 
@@ -294,7 +295,7 @@ std::string timeTravelWhat(const std::string& target, const std::string& source,
 
 [[gnu::noinline]] bool sameUnknownName(const std::string& target, const std::string& source) {
   const std::string_view a = stripLeadingSlash(target);
-  return !a.empty() && a == stripLeadingSlash(source);
+  return !a.empty() && detail::sameName(a, stripLeadingSlash(source));
 }
 
 // tf2 answers a lookup from a frame to itself with identity without checking the frame. Known
