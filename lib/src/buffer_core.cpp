@@ -48,7 +48,7 @@ BufferCore::Impl::Impl(Duration cache_time)
     : cache_time_(cache_time.count()),
       most_samples_per_edge_(defaultMostSamplesPerEdge(cache_time)),
       reporter_([](const std::string& message) { std::cerr << "lcmtf: " << message << '\n'; }) {
-  frames_.emplace_back();  // id 0: no frame
+  last_inserted_ = &frames_.emplace_back();  // id 0: no frame
 }
 
 FrameId BufferCore::Impl::idOf(std::string_view name) const { return ids_.find(name); }
@@ -56,15 +56,17 @@ FrameId BufferCore::Impl::idOf(std::string_view name) const { return ids_.find(n
 // Publishers send the same edges in the same order, cycle after cycle: comparing one name
 // with the frame that followed last time is cheaper than hashing it, and on a large tree it
 // saves a load from a random place in the name index, which memory then answers.
-FrameId BufferCore::Impl::knownChild(std::string_view name) const {
-  const FrameId predicted = frames_[last_inserted_].next_inserted;
-  return predicted != kNoFrame && detail::sameName(nameOf(predicted), name) ? predicted
-                                                                            : idOf(name);
-}
-
-void BufferCore::Impl::noteInserted(FrameId child) {
-  frames_[last_inserted_].next_inserted = child;
-  last_inserted_ = child;
+FrameRecord* BufferCore::Impl::knownChild(std::string_view name, FrameId& id) {
+  const FrameId predicted = last_inserted_->next_inserted;
+  if (predicted != kNoFrame) {
+    FrameRecord& record = frames_[predicted];
+    if (detail::sameName(record.name, name)) {
+      id = predicted;
+      return &record;
+    }
+  }
+  id = idOf(name);
+  return id != kNoFrame ? &frames_[id] : nullptr;
 }
 
 FrameId BufferCore::Impl::addFrame(std::string_view name) {
@@ -123,29 +125,28 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
   const std::string_view child = stripLeadingSlash(transform.child_frame);
   const std::int64_t stamp = toUtime(transform.stamp);
   // Refuse a sample that is too old before adding any frame, so the refusal changes nothing.
-  const FrameId known_child = knownChild(child);
-  if (!is_static && known_child != kNoFrame &&
-      frames_[known_child].cache.isTooOld(stamp, cache_time_)) {
+  FrameId known_child = kNoFrame;
+  FrameRecord* const known = knownChild(child, known_child);
+  if (!is_static && known && known->cache.isTooOld(stamp, cache_time_)) {
     reason = edgeName(transform) + " is older than the history kept: the newest sample is at " +
-             toString(fromUtime(frames_[known_child].cache.newestStamp())) +
-             " and the cache time is " + toString(Duration(cache_time_));
+             toString(fromUtime(known->cache.newestStamp())) + " and the cache time is " +
+             toString(Duration(cache_time_));
     return InsertRejection::kOlderThanHistory;
   }
-  if (!is_static && known_child != kNoFrame &&
-      frames_[known_child].cache.isFullAndOlder(stamp, most_samples_per_edge_)) {
+  if (!is_static && known && known->cache.isFullAndOlder(stamp, most_samples_per_edge_)) {
     reason = edgeName(transform) + " already holds its most samples (" +
              std::to_string(most_samples_per_edge_) + "), all newer than this one at " +
              toString(transform.stamp);
     return InsertRejection::kEdgeFull;
   }
-  const FrameId child_id = known_child != kNoFrame ? known_child : addFrame(child);
-  noteInserted(child_id);
+  const FrameId child_id = known ? known_child : addFrame(child);
+  FrameRecord& record = known ? *known : frames_[child_id];
+  noteInserted(child_id, record);
   // An edge keeps its parent from one sample to the next: compare before hashing the name.
-  const FrameId usual_parent = frames_[child_id].cache.newestParent();
+  const FrameId usual_parent = record.cache.newestParent();
   const FrameId parent_id =
       usual_parent != kNoFrame && detail::sameName(nameOf(usual_parent), parent) ? usual_parent
                                                                                  : addFrame(parent);
-  FrameRecord& record = frames_[child_id];
   const bool was_static = record.cache.isStatic();
   const bool changed_parent = record.cache.changesParent();
   if (is_static) {
@@ -156,7 +157,7 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
     if (!unchanged) {
       if (!was_static || record.cache.staticParent() != parent_id) noteShapeChange(child_id);
       record.cache.setStatic(parent_id, value);
-      if (known_child == kNoFrame) {
+      if (!known) {
         // A frame new to the buffer has nothing below it: only its own chain is new.
         continueStaticChain(record, frames_[parent_id], value);
       } else {

@@ -94,10 +94,14 @@ class BufferCore::Impl {
   FrameId idOf(std::string_view name) const;
   FrameId addFrame(std::string_view name);  // exclusive lock
   /// idOf() for the child of an edge being inserted, trying first the frame whose edge came
-  /// after the last one inserted the time before.
-  FrameId knownChild(std::string_view name) const;
-  /// Notes that `child`'s edge was inserted after the last one (exclusive lock).
-  void noteInserted(FrameId child);
+  /// after the last one inserted the time before; the frame's record, or null when unknown.
+  FrameRecord* knownChild(std::string_view name, FrameId& id);
+  /// Notes that `child`'s edge, whose record is `record`, was inserted after the last one
+  /// (exclusive lock).
+  void noteInserted(FrameId child, FrameRecord& record) {
+    last_inserted_->next_inserted = child;
+    last_inserted_ = &record;
+  }
   const std::string_view& nameOf(FrameId id) const { return frames_[id].name; }
   std::string quoted(FrameId id) const { return "'" + std::string(nameOf(id)) + "'"; }
 
@@ -213,7 +217,9 @@ class BufferCore::Impl {
   detail::NameArena names_;  // stable storage behind FrameRecord::name
   FrameTable frames_;
   detail::FrameNameIndex ids_;
-  FrameId last_inserted_ = kNoFrame;  // the child of the edge inserted last
+  // The record of the child of the edge inserted last (that of id 0 before any): the records
+  // never move, and an insert then finds it without working out where id's record is.
+  FrameRecord* last_inserted_ = nullptr;
   RootPaths root_paths_;
   bool root_paths_stale_ = false;
   // How many dynamic edges hold samples with more than one parent: while there are none, the
@@ -234,8 +240,8 @@ class BufferCore::Impl {
 };
 
 /// The frames of the loop above `start` in the tree at `stamp` (0: as of the newest samples).
-std::vector<FrameId> findLoop(const FrameTable& frames, FrameId start,
-                              std::int64_t stamp, bool latest);
+std::vector<FrameId> findLoop(const FrameTable& frames, FrameId start, std::int64_t stamp,
+                              bool latest);
 
 /// One leading '/' is not part of a frame's name.
 inline std::string_view stripLeadingSlash(std::string_view name) {
