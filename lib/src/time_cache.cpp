@@ -25,7 +25,9 @@ void TimeCache::clearHistory() {
   refreshEnds();
 }
 
-void TimeCache::refreshEnds() {
+// This and the two helpers below are inlined into insert(): their calls took 4 % of an insert
+// on the wide tree of buffer_core_bench.
+[[gnu::always_inline]] inline void TimeCache::refreshEnds() {
   single_parent_from_ = std::numeric_limits<std::int64_t>::max();
   if (count_ == 0) {
     oldest_stamp_ = newest_stamp_ = 0;
@@ -78,13 +80,13 @@ void TimeCache::move(std::size_t from, std::size_t to) {
   if (parents_.size() != 0) parents_[destination] = parents_[source];
 }
 
-void TimeCache::refreshArc(std::size_t index) {
+[[gnu::always_inline]] inline void TimeCache::refreshArc(std::size_t index) {
   if (index + 1 >= count_) return;
   samples_.arc(slot(index)) =
       signedArcSquared(transformAt(index).rotation, transformAt(index + 1).rotation);
 }
 
-void TimeCache::noteParentChanges(std::size_t index) {
+[[gnu::always_inline]] inline void TimeCache::noteParentChanges(std::size_t index) {
   if (index > 0 && parentOf(index - 1) != parentOf(index)) {
     parent_changed_at_ = std::max(parent_changed_at_, stampAt(index));
   }
