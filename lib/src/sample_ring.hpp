@@ -57,6 +57,8 @@ class SampleRing {
   double arc(std::size_t index) const { return arcs_[index]; }
   /// Where slot `index` is, to prefetch.
   const void* address(std::size_t index) const { return slots_[index].bytes; }
+  /// Where slot `index`'s arc is, to prefetch.
+  const void* arcAddress(std::size_t index) const { return arcs_ + index; }
   void swap(SampleRing& other) noexcept {
     block_.swap(other.block_);
     std::swap(slots_, other.slots_);
