@@ -337,8 +337,10 @@ TEST(MonitorProcess, HostileInputIsCountedAndDescribedWhileGoodTrafficIsReported
   ChildProcess echo(LCMTF_ECHO_PATH, {"--lcm-url", url, "--rate", "20", "odom", "base"});
   ASSERT_TRUE(echo.waitForStdout("'base' in 'odom'", 5s)) << echo.stderrText();
   lcm::LCM lcm(url);
-  // The hostile messages go out once the monitor listens, well inside its window.
-  ChildProcess monitor(LCMTF_MONITOR_PATH, {"--lcm-url", url, "--duration", "1.5"});
+  // The hostile messages go out once the monitor listens, well inside its window: its request
+  // may be seen a second or more after it started on a slow (sanitizer) build, and a window of
+  // 1.5 s then closed before the last of them.
+  ChildProcess monitor(LCMTF_MONITOR_PATH, {"--lcm-url", url, "--duration", "3"});
   ASSERT_TRUE(waitForStaticRequest(lcm, "lcmtf-monitor", 5s)) << monitor.stderrText();
 
   const std::uint8_t garbage[] = {0xde, 0xad, 0xbe, 0xef, 1, 2, 3, 4, 5, 6, 7, 8, 9};
