@@ -573,6 +573,26 @@ TEST_F(HelixTimeTravel, TimeTravelWithEqualTimesMatchesThePlainLookup) {
                    buffer_.lookupTransform("base", "object", at(kT1)).transform, kTolerance));
 }
 
+// Both frames hang below odom -> base, and map -> odom is static, far off and turned: each
+// half of the lookup crosses that chain, one way and back.
+TEST_F(HelixTimeTravel, TimeTravelThroughAFixedFrameAboveAStaticChainCrossesItBothWays) {
+  const Eigen::Isometry3d map_T_odom = isometry({120, -45, 3}, 2.1, {1, 2, 3});
+  putStatic(buffer_, "map", "odom", pose({120, -45, 3}, 2.1, {1, 2, 3}));
+  for (const double t2 : {2.0, 5.0, 7.3, 10.0}) {
+    const Eigen::Isometry3d map_T_camera_t2 = map_T_odom * odom_T_base(t2) * base_T_camera;
+    const Eigen::Isometry3d map_T_object =
+        map_T_odom * odom_T_base(kT1) * base_T_camera * camera_T_object;
+    const TransformStamped result =
+        buffer_.lookupTransform("camera", at(t2), "object", at(kT1), "map");
+    EXPECT_TRUE(near(result.transform, map_T_camera_t2.inverse() * map_T_object, kTolerance))
+        << "t2 " << t2;
+    const TransformStamped back =
+        buffer_.lookupTransform("object", at(kT1), "camera", at(t2), "map");
+    EXPECT_TRUE(near(back.transform, map_T_object.inverse() * map_T_camera_t2, kTolerance))
+        << "t2 " << t2;
+  }
+}
+
 TEST_F(HelixTimeTravel, TimeTravelIntoAFrameWhoseDataIsOutOfRangeThrowsExtrapolation) {
   EXPECT_THROW(buffer_.lookupTransform("base", at(10.5), "object", at(kT1), "odom"),
                FutureExtrapolationException);

@@ -161,6 +161,27 @@ double magnitudeOf(const PathPlan& plan, const Transform* const* values) {
   return sum;
 }
 
+// The static chain that a time-travel lookup's two halves cross, one each way, as their last
+// steps, dropped from both plans; null when there is none. Where the fixed frame is above both
+// frames and each half's last step is a dynamic edge anchored to the static chain above one
+// same parent (as a robot's frames hang below map -> odom -> base_link), the chain and its
+// inverse cancel in the product. Two compositions fewer: 4 % of the instructions of a
+// time-travel lookup on the wide tree of buffer_core_bench, 2 % on deep_chain.
+const Transform* dropSharedAnchor(QuickPath& source_path, QuickPath& target_path) {
+  const PathPlan& source_plan = source_path.plan;
+  const PathPlan& target_plan = target_path.plan;
+  if (source_plan.target_count != 0 || target_plan.source_count != 0 ||
+      source_plan.source_count == 0 || target_plan.target_count == 0) {
+    return nullptr;
+  }
+  PlanStep& source_last = source_path.steps[source_plan.source_count - 1];
+  PlanStep& target_last = target_path.steps[target_plan.target_count - 1];
+  const Transform* const anchor = source_last.anchor;
+  if (!anchor || anchor != target_last.anchor) return nullptr;
+  source_last.anchor = target_last.anchor = nullptr;
+  return anchor;
+}
+
 // Interpolation tasks and rooms for the steps of `Paths` quick paths.
 template <std::size_t Paths>
 struct QuickSamplerRoom {
@@ -212,6 +233,7 @@ bool BufferCore::Impl::quickTimeTravel(FrameId target, std::int64_t& target_stam
                 target_path)) {
     return false;
   }
+  const Transform* const dropped_anchor = dropSharedAnchor(source_path, target_path);
   QuickSamplerRoom<2> room;
   detail::PathSampler sampler(room.storage());
   const Transform* source_values[kMostSteps];
@@ -236,10 +258,16 @@ bool BufferCore::Impl::quickTimeTravel(FrameId target, std::int64_t& target_stam
     detail::productOf(source_path.plan, source_values, fixed_T_source);
     detail::productOf(target_path.plan, target_values, target_T_fixed);
     if (cross_check) {
+      double anchor_magnitude = 0.0;
+      if (dropped_anchor) {
+        fixed_T_source = detail::composed(*dropped_anchor, fixed_T_source);
+        target_T_fixed = detail::composed(target_T_fixed, dropped_anchor->inverse());
+        anchor_magnitude = dropped_anchor->translation.norm();
+      }
       crossCheck(fixed, source, source_stamp, source_path.plan.at, &fixed_T_source,
-                 magnitudeOf(source_path.plan, source_values));
+                 magnitudeOf(source_path.plan, source_values) + anchor_magnitude);
       crossCheck(target, fixed, target_stamp, target_path.plan.at, &target_T_fixed,
-                 magnitudeOf(target_path.plan, target_values));
+                 magnitudeOf(target_path.plan, target_values) + anchor_magnitude);
     }
     if (!fixed_above_both) value = detail::composed(target_T_fixed, fixed_T_source);
   }
