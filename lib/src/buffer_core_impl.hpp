@@ -16,6 +16,7 @@
 #include "lcmtf/buffer_core.hpp"
 #include "lcmtf/frame_name.hpp"
 #include "name_arena.hpp"
+#include "quick_path.hpp"
 #include "read_mostly_lock.hpp"
 #include "root_paths.hpp"
 #include "time_cache.hpp"
@@ -134,6 +135,13 @@ class BufferCore::Impl {
   /// not answer as the walk would: a frame without a path, an edge on the way whose history
   /// changes parent, or any failure; then the walk must, and `stamp` is left as it was.
   bool quickLookup(FrameId target, FrameId source, std::int64_t& stamp, Transform* value) const;
+  /// quickLookup() in two halves, for callers with work to do while the samples load: the
+  /// plan, whose `at` is the stamp of the answer, with the loads of its samples started when
+  /// `prefetch` (false when quickLookup() would be), then its value.
+  bool planQuickLookup(FrameId target, FrameId source, std::int64_t stamp, bool prefetch,
+                       detail::QuickPath& path) const;
+  Transform quickValue(FrameId target, FrameId source, std::int64_t stamp,
+                       const detail::QuickPath& path) const;
   /// The time-travel lookup by the root paths: `source` at `source_stamp` into `fixed`, then
   /// `fixed` at `target_stamp` into `target`, sampled and interpolated together. False, with
   /// nothing written, when quickLookup() could not answer either half, or `fixed` is one of

@@ -9,16 +9,17 @@
 #include "compose.hpp"
 #include "lookup_mode.hpp"
 #include "path_plan.hpp"
+#include "quick_path.hpp"
 
 namespace lcmtf {
 
 namespace {
 
-// Longer paths are left to the walk, so that a quick lookup needs no heap.
-constexpr std::size_t kMostSteps = 64;
+constexpr std::size_t kMostSteps = detail::kMostQuickSteps;
 
 using detail::PathPlan;
 using detail::PlanStep;
+using detail::QuickPath;
 
 // Where two paths meet: how many steps of each are taken, and whether each one's last step
 // is anchored. Where each path's last step crosses the static chain the other path crosses
@@ -86,12 +87,6 @@ MeetingPoint meetingPoint(const RootPaths::Path& up_from_source,
   }
   return true;
 }
-
-// A plan as a quick lookup makes it, with room for its steps.
-struct QuickPath {
-  PathPlan plan;
-  PlanStep steps[kMostSteps];
-};
 
 // Whether the tree at `at` may differ from the root paths' above where two paths meet: a
 // dynamic edge there that has changed parent within its history and has data at `at` may then
@@ -189,27 +184,36 @@ struct QuickSamplerRoom {
 
 }  // namespace
 
+bool BufferCore::Impl::planQuickLookup(FrameId target, FrameId source, std::int64_t stamp,
+                                       bool prefetch, QuickPath& path) const {
+  return detail::quickLookupsEnabled() && max_gap_ == 0 &&
+         planPath(root_paths_, frames_, target, source, stamp, prefetch,
+                  parent_changing_edges_ != 0, path);
+}
+
+Transform BufferCore::Impl::quickValue(FrameId target, FrameId source, std::int64_t stamp,
+                                       const QuickPath& path) const {
+  QuickSamplerRoom<1> room;
+  detail::PathSampler sampler(room.storage());
+  const Transform* values[kMostSteps];
+  sampler.sample(path.plan, values);
+  sampler.run();
+  Transform value;
+  detail::productOf(path.plan, values, value);
+  if (detail::crossCheckQuickLookups()) {
+    crossCheck(target, source, stamp, path.plan.at, &value, magnitudeOf(path.plan, values));
+  }
+  return value;
+}
+
 bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t& stamp,
                                    Transform* value) const {
-  if (!detail::quickLookupsEnabled() || max_gap_ != 0) return false;
   QuickPath path;
-  if (!planPath(root_paths_, frames_, target, source, stamp, value != nullptr,
-                parent_changing_edges_ != 0, path)) {
-    return false;
-  }
-  const bool cross_check = detail::crossCheckQuickLookups();
-  double magnitude = 0.0;
+  if (!planQuickLookup(target, source, stamp, value != nullptr, path)) return false;
   if (value) {
-    QuickSamplerRoom<1> room;
-    detail::PathSampler sampler(room.storage());
-    const Transform* values[kMostSteps];
-    sampler.sample(path.plan, values);
-    sampler.run();
-    detail::productOf(path.plan, values, *value);
-    if (cross_check) magnitude = magnitudeOf(path.plan, values);
-  }
-  if (cross_check) {
-    crossCheck(target, source, stamp, path.plan.at, value, magnitude);
+    *value = quickValue(target, source, stamp, path);
+  } else if (detail::crossCheckQuickLookups()) {
+    crossCheck(target, source, stamp, path.plan.at, nullptr, 0.0);
   }
   stamp = path.plan.at;
   return true;
