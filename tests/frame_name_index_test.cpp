@@ -56,7 +56,26 @@ TEST_F(NameIndex, PrefixesAndExtensionsOfANameAreNotFound) {
   }
 }
 
+TEST_F(NameIndex, EveryIdGivesBackItsName) {
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string_view name = index.nameOf(static_cast<FrameId>(i + 1));
+    EXPECT_EQ(name, names[i]);
+    EXPECT_EQ(name.data(), names[i].data()) << "the stored name itself, not a copy";
+  }
+}
+
 TEST(NameIndexEmpty, FindsNothing) { EXPECT_EQ(FrameNameIndex().find("map"), kNoFrame); }
+
+TEST(NameIndexEmpty, NoFrameHasAnEmptyName) {
+  EXPECT_TRUE(FrameNameIndex().nameOf(kNoFrame).empty());
+}
+
+TEST(NameIndexGaps, AnIdSkippedBelowAnotherHasAnEmptyName) {
+  FrameNameIndex index;
+  index.insert("odom", 3);
+  EXPECT_TRUE(index.nameOf(2).empty());
+  EXPECT_EQ(index.nameOf(3), "odom");
+}
 
 }  // namespace
 }  // namespace lcmtf::detail

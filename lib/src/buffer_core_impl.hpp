@@ -103,7 +103,7 @@ class BufferCore::Impl {
     last_inserted_->next_inserted = child;
     last_inserted_ = &record;
   }
-  const std::string_view& nameOf(FrameId id) const { return frames_[id].name; }
+  std::string_view nameOf(FrameId id) const { return ids_.nameOf(id); }
   std::string quoted(FrameId id) const { return "'" + std::string(nameOf(id)) + "'"; }
 
   /// target_T_source at `stamp` (0: the latest common time, written back) into `value` when

@@ -28,6 +28,11 @@ class FrameNameIndex {
     }
   }
 
+  FrameNameIndex() : names_(1) {}
+
+  /// The name of frame `id`: empty for kNoFrame, and for an id not inserted below the highest.
+  std::string_view nameOf(FrameId id) const { return names_[id]; }
+
   void insert(std::string_view name, FrameId id) {
     // At most a quarter full, so that most names are found at the first slot tried.
     if (4 * (count_ + 1) > slots_.size()) grow();
@@ -98,7 +103,7 @@ class FrameNameIndex {
   }
 
   std::vector<Slot, LargeArrayAllocator<Slot>> slots_;
-  std::vector<std::string_view, LargeArrayAllocator<std::string_view>> names_;  // by id
+  std::vector<std::string_view, LargeArrayAllocator<std::string_view>> names_;  // by id, from 0
   std::size_t mask_ = 0;
   std::size_t count_ = 0;
 };
