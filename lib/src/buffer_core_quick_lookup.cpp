@@ -15,8 +15,7 @@ namespace lcmtf {
 
 namespace {
 
-constexpr std::size_t kMostSteps = detail::kMostQuickSteps;
-
+using detail::kMostQuickSteps;
 using detail::PathPlan;
 using detail::PlanStep;
 using detail::QuickPath;
@@ -118,7 +117,7 @@ bool planPath(const RootPaths& root_paths, const FrameTable& frames, FrameId tar
   }
   const MeetingPoint meeting = meetingPoint(up_from_source, up_from_target, source, target);
   const std::size_t count = meeting.source_count + meeting.target_count;
-  if (count > kMostSteps) return false;
+  if (count > kMostQuickSteps) return false;
   PlanStep* const steps = path.steps;
   CommonNewest common_newest;
   if (!takeSteps(up_from_source.steps, meeting.source_count, meeting.source_anchored, stamp,
@@ -177,8 +176,8 @@ const Transform* dropSharedAnchor(QuickPath& source_path, QuickPath& target_path
 // Interpolation tasks and rooms for the steps of `Paths` quick paths.
 template <std::size_t Paths>
 struct QuickSamplerRoom {
-  detail::InterpolationTask tasks[Paths * kMostSteps];
-  detail::TransformRoom rooms[Paths * kMostSteps];
+  detail::InterpolationTask tasks[Paths * kMostQuickSteps];
+  detail::TransformRoom rooms[Paths * kMostQuickSteps];
   detail::SamplerStorage storage() { return {tasks, rooms}; }
 };
 
@@ -195,7 +194,7 @@ Transform BufferCore::Impl::quickValue(FrameId target, FrameId source, std::int6
                                        const QuickPath& path) const {
   QuickSamplerRoom<1> room;
   detail::PathSampler sampler(room.storage());
-  const Transform* values[kMostSteps];
+  const Transform* values[kMostQuickSteps];
   sampler.sample(path.plan, values);
   sampler.run();
   Transform value;
@@ -244,8 +243,8 @@ bool BufferCore::Impl::quickTimeTravel(FrameId target, std::int64_t& target_stam
       fixed_above_both ? dropSharedAnchor(source_path, target_path) : nullptr;
   QuickSamplerRoom<2> room;
   detail::PathSampler sampler(room.storage());
-  const Transform* source_values[kMostSteps];
-  const Transform* target_values[kMostSteps];
+  const Transform* source_values[kMostQuickSteps];
+  const Transform* target_values[kMostQuickSteps];
   sampler.sample(source_path.plan, source_values);
   sampler.sample(target_path.plan, target_values);
   sampler.run();
