@@ -85,7 +85,8 @@ struct LatestBounds {
 // Fills `out` with the steps of one side; false when a dynamic edge among them has changed
 // parent within its history (the tree at `stamp` may not be the paths'), or has no data at
 // `stamp` (0: both checked later, through `latest`, and the samples near each edge's newest
-// loaded and hinted at).
+// hinted at: they are seldom long out of the cache, and loading them ahead cost more than it
+// saved).
 // The paths were built with each edge's newest parent. Inlined into planPath(), which calls
 // it for each side: the calls took 3 % of a lookup on the wide tree of buffer_core_bench.
 // Built apart for lookups at the latest common time, so that neither loop asks at every step
@@ -103,7 +104,6 @@ template <bool kAtLatest>
     const detail::TimeCache& cache = *step.cache;
     if constexpr (kAtLatest) {
       latest.add(cache);
-      if (prefetch) cache.prefetchNewest();
       quick.hint = cache.hintNearNewest();
     } else {
       if (stamp < cache.singleParentFrom() || stamp > cache.newestStamp()) return false;

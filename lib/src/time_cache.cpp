@@ -177,8 +177,8 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
   refreshEnds();
   // The next insert reads the stamp of the sample after the oldest and writes the slot after
   // the newest, both long out of the cache by then on a busy edge.
-  if (count_ > 1) __builtin_prefetch(samples_.address(slot(1)));
-  if (count_ < samples_.size()) __builtin_prefetch(samples_.address(slot(count_)), 1);
+  if (count_ > 1) prefetchLine(samples_.address(slot(1)));
+  if (count_ < samples_.size()) prefetchLineToWrite(samples_.address(slot(count_)));
   return dropped ? InsertOutcome::kAddedDroppingOldest : InsertOutcome::kAdded;
 }
 

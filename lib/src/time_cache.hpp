@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "lcmtf/transform.hpp"
+#include "prefetch.hpp"
 #include "sample_ring.hpp"
 #include "slerp_weights.hpp"
 #include "unfilled_array.hpp"
@@ -124,22 +125,17 @@ class TimeCache {
   /// sample.
   std::size_t hintNearNewest() const { return count_ >= 2 ? count_ - 2 : kNoHint; }
   static constexpr std::size_t kNoHint = static_cast<std::size_t>(-1);
-  /// Starts loading the two newest samples, which hintNearNewest() and a lookup near the
-  /// newest time read.
-  void prefetchNewest() const {
-    if (count_ >= 2) prefetchSpan(count_ - 2);
-  }
 
  private:
   /// Starts loading what interpolating from sample `index` to the next reads: both samples
   /// and the arc between them. The arc lives apart from the samples, and interpolating waits
   /// on it: loading it here took 4 % off the lookups at random times on the wide tree of
   /// buffer_core_bench, 5 % off pr2's time travel.
-  void prefetchSpan(std::size_t index) const {
+  [[gnu::always_inline]] void prefetchSpan(std::size_t index) const {
     const std::size_t at = slot(index);
-    __builtin_prefetch(samples_.address(at));
-    __builtin_prefetch(samples_.address(slot(index + 1)));
-    __builtin_prefetch(samples_.arcAddress(at));
+    prefetchLine(samples_.address(at));
+    prefetchLine(samples_.address(slot(index + 1)));
+    prefetchLine(samples_.arcAddress(at));
   }
   std::size_t slot(std::size_t index) const {
     const std::size_t at = head_ + index;
