@@ -10,6 +10,7 @@
 #include "lcmtf/printable.hpp"
 #include "lcmtf/transform_validation.hpp"
 #include "name_words.hpp"
+#include "prefetch.hpp"
 
 namespace lcmtf {
 
@@ -67,6 +68,25 @@ FrameRecord* BufferCore::Impl::knownChild(std::string_view name, FrameId& id) {
   }
   id = idOf(name);
   return id != kNoFrame ? &frames_[id] : nullptr;
+}
+
+// Publishers send the same edges in the same order, batch after batch: while one edge is
+// stored, what storing the next two will read starts loading. The next edge's samples and name
+// are found through its record, which the insert before started loading, as this one starts
+// loading the record of the edge after it. On a tree too large for the caches, storing an edge
+// otherwise waits on memory for its record, then for its samples.
+void BufferCore::Impl::prefetchNextInserts(const FrameRecord& record) const {
+  const FrameId next = record.next_inserted;
+  if (next == kNoFrame) return;
+  const FrameRecord& coming = frames_[next];
+  detail::prefetchLine(coming.name.data());
+  coming.cache.prefetchInsert();
+  const FrameId after = coming.next_inserted;
+  if (after == kNoFrame) return;
+  const auto* later = reinterpret_cast<const char*>(&frames_[after]);
+  for (std::size_t line = 0; line < kInsertedRecordLines; ++line) {
+    detail::prefetchLine(later + alignof(FrameRecord) * line);
+  }
 }
 
 FrameId BufferCore::Impl::addFrame(std::string_view name) {
@@ -141,6 +161,7 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
   }
   const FrameId child_id = known ? known_child : addFrame(child);
   FrameRecord& record = known ? *known : frames_[child_id];
+  prefetchNextInserts(record);
   noteInserted(child_id, record);
   // An edge keeps its parent from one sample to the next: compare before hashing the name.
   const FrameId usual_parent = record.cache.newestParent();

@@ -103,6 +103,9 @@ class BufferCore::Impl {
     last_inserted_->next_inserted = child;
     last_inserted_ = &record;
   }
+  /// Starts loading what storing the edges that came after `record`'s the time before will
+  /// read (see the definition).
+  void prefetchNextInserts(const FrameRecord& record) const;
   std::string_view nameOf(FrameId id) const { return ids_.nameOf(id); }
   std::string quoted(FrameId id) const { return "'" + std::string(nameOf(id)) + "'"; }
 

@@ -12,22 +12,26 @@ namespace lcmtf {
 using detail::FrameId;
 using detail::kNoFrame;
 
-/// One frame and the edge to its parent. Each record starts a cache line: the name and the
-/// edge's hot part share its first two.
+/// One frame and the edge to its parent. Each record starts a cache line: what an insert
+/// reads and writes (the name, the ids beside it and the edge's hot part) fills its first three
+/// lines, in what the cache's alignment would leave as padding after the name.
 struct alignas(64) FrameRecord {
   std::string_view name;
-  detail::TimeCache cache;
   std::uint32_t authority = 0;
   // The child of the edge inserted after this frame's the last time, so that a publisher's
   // next edge is found without hashing its name (see BufferCore::Impl::knownChild()).
   FrameId next_inserted = kNoFrame;
-  std::uint64_t authority_conflicts = 0;
   // The highest frame reached from this one through static edges alone (this frame itself
   // when its edge is not static), and the static edges between them composed, so a lookup
   // crosses a chain of static edges in one step.
   FrameId static_top = kNoFrame;
+  detail::TimeCache cache;
+  std::uint64_t authority_conflicts = 0;
   Transform static_top_T_frame;
 };
+
+/// How many of a record's cache lines an insert reads.
+constexpr std::size_t kInsertedRecordLines = 3;
 
 /// Every frame's record, indexed by FrameId; records stay where they are as frames are added.
 using FrameTable = detail::StableVector<FrameRecord>;

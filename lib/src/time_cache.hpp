@@ -120,6 +120,18 @@ class TimeCache {
   /// returns where it guessed they are, as a hint for spanWithin(). For a dynamic edge with
   /// data at `stamp`.
   std::size_t prefetch(std::int64_t stamp) const;
+  /// Starts loading what inserting a sample newer than all those kept reads and writes: the
+  /// two oldest samples (pruning reads their stamps), the newest (the arc to the new one reads
+  /// its rotation) with its arc, and the slot after it.
+  void prefetchInsert() const {
+    if (count_ < 2) return;
+    prefetchLine(samples_.address(slot(0)));
+    prefetchLine(samples_.address(slot(1)));
+    const std::size_t newest = slot(count_ - 1);
+    prefetchLine(samples_.address(newest));
+    prefetchLineToWrite(samples_.arcAddress(newest));
+    if (count_ < samples_.size()) prefetchLineToWrite(samples_.address(slot(count_)));
+  }
   /// A hint for spanWithin() at a time near the newest sample (as latest-common-time lookups
   /// ask): the sample before the newest, which spanWithin() checks, so that planning reads no
   /// sample.
