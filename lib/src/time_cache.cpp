@@ -175,10 +175,6 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
   const std::int64_t horizon = saturatingSubtract(sample.stamp, cache_time);
   while (stampAt(0) < horizon) dropOldest();
   refreshEnds();
-  // The next insert reads the stamp of the sample after the oldest and writes the slot after
-  // the newest, both long out of the cache by then on a busy edge.
-  if (count_ > 1) prefetchLine(samples_.address(slot(1)));
-  if (count_ < samples_.size()) prefetchLineToWrite(samples_.address(slot(count_)));
   return dropped ? InsertOutcome::kAddedDroppingOldest : InsertOutcome::kAdded;
 }
 
