@@ -8,9 +8,9 @@ if(NOT status EQUAL 0)
 endif()
 string(REGEX MATCHALL "[ \t]prefetch[a-z0-9]*[ \t]" prefetches "${disassembly}")
 list(LENGTH prefetches count)
-# A lookup's plan loads three lines for each dynamic edge of either side, an insert two lines
-# for the next sample of its edge, and five for the next edge's, besides that edge's name and
-# the following edge's record.
+# A lookup's plan loads three lines for each dynamic edge of either side (six instructions, one
+# loop for each side), an insert five for the next edge's samples besides that edge's name and
+# three lines of the following edge's record (nine).
 set(fewest 10)
 if(count LESS fewest)
   message(FATAL_ERROR "${LIBRARY} holds ${count} prefetch instructions, fewer than ${fewest}: "
