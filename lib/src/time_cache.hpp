@@ -143,7 +143,7 @@ class TimeCache {
   /// and the arc between them, which lives apart from them. Loading every step's samples while
   /// the path is still being planned costs 4-6 % more instructions a lookup at a given time,
   /// and made those lookups faster: pr2's random ones of buffer_core_bench by about 5 %, the
-  /// forest's by about 15 % (processes with and without it, taking turns).
+  /// forest's by 5-17 % (processes with and without it taking turns, fastest and middle runs).
   [[gnu::always_inline]] void prefetchSpan(std::size_t index) const {
     const std::size_t at = slot(index);
     prefetchLine(samples_.address(at));
