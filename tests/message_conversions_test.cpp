@@ -30,7 +30,7 @@ TEST(MessageConversions, MessageRoundTripsThroughTransformStamped) {
 }
 
 TEST(MessageConversions, QuaternionKeepsScalarPartInW) {
-  quaternion_t message;
+  quaternion_t message{};
   message.x = 0.1;
   message.y = 0.2;
   message.z = 0.3;

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <new>
 #include <thread>
 
 #include "lcmtf/static_transform_broadcaster.hpp"
@@ -447,6 +449,22 @@ TEST(TransformListener, BroadcastBatchesArriveNumberedWithNothingLost) {
   EXPECT_EQ(shared.lost_batches + shared.reordered_batches + shared.duplicated_batches +
                 shared.sequence_restarts,
             0u);
+}
+
+TEST(TransformListener, ABatchMadeByHandIsNotNumberedWhateverTheMemoryHeldBefore) {
+  alignas(tf_message_t) unsigned char storage[sizeof(tf_message_t)];
+  std::memset(storage, 0xab, sizeof storage);
+  // Built where it is returned to, so nothing but makeTfMessage sets its fields.
+  auto* batch = new (storage) tf_message_t(makeTfMessage({edge("odom", "base", 1000)}, "hand"));
+  EXPECT_EQ(batch->sequence, 0);
+  Buffer buffer;
+  lcm::LCM lcm("memq://");
+  TransformListener listener(buffer, lcm);
+  const std::vector<std::uint8_t> bytes = lcmtf_test::encode(*batch);
+  for (int i = 0; i < 3; ++i) listener.handleMessage(bytes.data(), bytes.size(), kTfChannel);
+  const AuthorityStatistics hand = statisticsOf(listener, "hand");
+  EXPECT_EQ(hand.lost_batches + hand.duplicated_batches + hand.sequence_restarts, 0u);
+  batch->~tf_message_t();
 }
 
 TEST(TransformListener, AMaximumInterpolationGapMakesLookupsAcrossLostBatchesFail) {

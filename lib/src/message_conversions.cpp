@@ -3,7 +3,7 @@
 namespace lcmtf {
 
 vector3_t toMessage(const Eigen::Vector3d& vector) {
-  vector3_t message;
+  vector3_t message{};
   message.x = vector.x();
   message.y = vector.y();
   message.z = vector.z();
@@ -11,7 +11,7 @@ vector3_t toMessage(const Eigen::Vector3d& vector) {
 }
 
 quaternion_t toMessage(const Eigen::Quaterniond& rotation) {
-  quaternion_t message;
+  quaternion_t message{};
   message.x = rotation.x();
   message.y = rotation.y();
   message.z = rotation.z();
@@ -20,7 +20,7 @@ quaternion_t toMessage(const Eigen::Quaterniond& rotation) {
 }
 
 transform_t toMessage(const TransformStamped& transform) {
-  transform_t message;
+  transform_t message{};
   message.utime = toUtime(transform.stamp);
   message.parent_frame = transform.parent_frame;
   message.child_frame = transform.child_frame;

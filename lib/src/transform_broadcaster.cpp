@@ -9,7 +9,7 @@ namespace lcmtf {
 
 tf_message_t makeTfMessage(const std::vector<TransformStamped>& transforms,
                            const std::string& authority, TimePoint sent) {
-  tf_message_t message;
+  tf_message_t message{};
   message.utime = toUtime(sent);
   message.authority = authority;
   message.transforms.reserve(transforms.size());

@@ -67,7 +67,7 @@ void TransformListener::subscribe() {
 }
 
 void TransformListener::requestStatics() {
-  resend_request_t request;
+  resend_request_t request{};
   request.utime = toUtime(now());
   request.requester = options_.authority;
   lcm_.publish(options_.static_request_channel, &request);
@@ -122,7 +122,7 @@ void TransformListener::onMessage(const lcm::ReceiveBuffer* buffer, const std::s
 
 void TransformListener::handleMessage(const void* data, std::size_t size,
                                       const std::string& channel) {
-  tf_message_t batch;
+  tf_message_t batch{};
   const DecodeResult decoded = decodeMessage(data, size, batch, options_.limits);
   if (!decoded.ok) {
     std::lock_guard<std::mutex> guard(mutex_);

@@ -47,7 +47,7 @@ int main() {
   stamped.child_frame = "camera";
   stamped.transform = world_T_camera;
 
-  lcmtf::tf_message_t sent;
+  lcmtf::tf_message_t sent{};
   sent.utime = 1700000000000300;
   sent.authority = "consumer";
   sent.transforms.push_back(lcmtf::toMessage(stamped));

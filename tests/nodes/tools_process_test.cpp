@@ -311,25 +311,32 @@ TEST(MonitorProcess, ContinuousModeReportsEachWindowUntilStopped) {
   EXPECT_NEAR(std::stod(window[1]), 0.4, 0.1) << last_full_report;
 }
 
-// Waits for a request for static transforms from a program whose name starts `program`: a
-// tool asks once it has subscribed to everything, so what is sent after reaches it.
-bool waitForStaticRequest(lcm::LCM& lcm, const std::string& program,
-                          std::chrono::milliseconds timeout) {
-  struct Seen {
-    std::string program;
-    bool found = false;
-  } seen{program};
-  auto onRequest = [](const lcm::ReceiveBuffer*, const std::string&,
-                      const resend_request_t* request, Seen* context) {
-    context->found = context->found || request->requester.rfind(context->program, 0) == 0;
-  };
-  lcm::Subscription* subscription =
-      lcm.subscribeFunction<resend_request_t, Seen*>(kTfStaticRequestChannel, onRequest, &seen);
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  while (!seen.found && std::chrono::steady_clock::now() < deadline) lcm.handleTimeout(50);
-  lcm.unsubscribe(subscription);
-  return seen.found;
-}
+// Watches for a request for static transforms from a program whose name starts `program`: a
+// tool asks once it has subscribed to everything, so what is sent after reaches it. Made before
+// the program starts, so that its request cannot come before anyone listens.
+class StaticRequestWatch {
+ public:
+  StaticRequestWatch(lcm::LCM& lcm, std::string program) : lcm_(lcm), program_(std::move(program)) {
+    subscription_ = lcm_.subscribe(kTfStaticRequestChannel, &StaticRequestWatch::onRequest, this);
+  }
+  ~StaticRequestWatch() { lcm_.unsubscribe(subscription_); }
+
+  bool waitFor(std::chrono::milliseconds timeout) {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    while (!found_ && std::chrono::steady_clock::now() < deadline) lcm_.handleTimeout(50);
+    return found_;
+  }
+
+ private:
+  void onRequest(const lcm::ReceiveBuffer*, const std::string&, const resend_request_t* request) {
+    found_ = found_ || request->requester.rfind(program_, 0) == 0;
+  }
+
+  lcm::LCM& lcm_;
+  std::string program_;
+  lcm::Subscription* subscription_ = nullptr;
+  bool found_ = false;
+};
 
 TEST(MonitorProcess, HostileInputIsCountedAndDescribedWhileGoodTrafficIsReported) {
   const std::string url = testUrl();
@@ -340,8 +347,9 @@ TEST(MonitorProcess, HostileInputIsCountedAndDescribedWhileGoodTrafficIsReported
   // The hostile messages go out once the monitor listens, well inside its window: its request
   // may be seen a second or more after it started on a slow (sanitizer) build, and a window of
   // 1.5 s then closed before the last of them.
+  StaticRequestWatch monitor_asks(lcm, "lcmtf-monitor");
   ChildProcess monitor(LCMTF_MONITOR_PATH, {"--lcm-url", url, "--duration", "3"});
-  ASSERT_TRUE(waitForStaticRequest(lcm, "lcmtf-monitor", 5s)) << monitor.stderrText();
+  ASSERT_TRUE(monitor_asks.waitFor(5s)) << monitor.stderrText();
 
   const std::uint8_t garbage[] = {0xde, 0xad, 0xbe, 0xef, 1, 2, 3, 4, 5, 6, 7, 8, 9};
   tf_message_t nan_batch{};

@@ -16,7 +16,7 @@ namespace {
 
 lcmtf::transform_t makeTransform(std::int64_t utime, const std::string& parent,
                                  const std::string& child, double x) {
-  lcmtf::transform_t t;
+  lcmtf::transform_t t{};
   t.utime = utime;
   t.parent_frame = parent;
   t.child_frame = child;
@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
   }
   const std::string dir = argv[1];
 
-  lcmtf::tf_message_t tf;
+  lcmtf::tf_message_t tf{};
   tf.utime = 1700000000000001;
   tf.authority = "spy_sample@host:42";
   tf.sequence = 17;
@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
 
   const lcmtf::transform_t transform = makeTransform(1700000000000004, "map", "odom", -7.75);
 
-  lcmtf::joint_state_t joints;
+  lcmtf::joint_state_t joints{};
   joints.utime = 1700000000000005;
   joints.authority = "spy_sample@host:44";
   joints.sequence = 18;
@@ -79,11 +79,11 @@ int main(int argc, char** argv) {
   joints.num_velocities = static_cast<std::int32_t>(joints.velocity.size());
   joints.num_efforts = 0;
 
-  lcmtf::resend_request_t resend;
+  lcmtf::resend_request_t resend{};
   resend.utime = 1700000000000006;
   resend.requester = "spy_sample_requester";
 
-  lcmtf::robot_description_t robot;
+  lcmtf::robot_description_t robot{};
   robot.utime = 1700000000000007;
   robot.authority = "spy_sample@host:43";
   robot.robot_name = "spy_bot";

@@ -6,7 +6,7 @@ namespace lcmtf_test {
 
 lcmtf::transform_t sampleTransform(int seed) {
   const double s = seed;
-  lcmtf::transform_t t;
+  lcmtf::transform_t t{};
   t.utime = 1'700'000'000'000'001 + seed;
   t.parent_frame = "parent_" + std::to_string(seed);
   t.child_frame = "child_" + std::to_string(seed);
@@ -21,7 +21,7 @@ lcmtf::transform_t sampleTransform(int seed) {
 }
 
 lcmtf::tf_message_t sampleTfMessage(int transforms) {
-  lcmtf::tf_message_t message;
+  lcmtf::tf_message_t message{};
   message.utime = 1'700'000'000'500'000;
   message.authority = "sample_broadcaster@host:4242";
   message.sequence = 4'000'000'017;
@@ -31,7 +31,7 @@ lcmtf::tf_message_t sampleTfMessage(int transforms) {
 }
 
 lcmtf::joint_state_t sampleJointState() {
-  lcmtf::joint_state_t state;
+  lcmtf::joint_state_t state{};
   state.utime = 1'700'000'000'250'000;
   state.authority = "sample_driver@host:4343";
   state.sequence = 5'000'000'019;
@@ -47,14 +47,14 @@ lcmtf::joint_state_t sampleJointState() {
 }
 
 lcmtf::resend_request_t sampleResendRequest() {
-  lcmtf::resend_request_t request;
+  lcmtf::resend_request_t request{};
   request.utime = 1'700'000'000'750'000;
   request.requester = "listener@host:77";
   return request;
 }
 
 lcmtf::robot_description_t sampleRobotDescription() {
-  lcmtf::robot_description_t description;
+  lcmtf::robot_description_t description{};
   description.utime = 1'700'000'001'000'000;
   description.authority = "urdf_publisher@host:9";
   description.robot_name = "sample_bot";

@@ -314,7 +314,7 @@ TEST(JointPublisherRun, PositionsFromItsSourcesTakeThePlaceOfItsOwn) {
       }
       return std::nan("");
     }
-    joint_state_t state;
+    joint_state_t state{};
     int count = 0;
   } latest;
   lcm::LCM lcm(url);

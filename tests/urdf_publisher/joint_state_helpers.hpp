@@ -12,7 +12,7 @@ namespace lcmtf_test {
 /// A joint state with these names and positions (counts set from them, no velocities).
 inline lcmtf::joint_state_t jointState(std::int64_t utime, const std::vector<std::string>& names,
                                        const std::vector<double>& positions) {
-  lcmtf::joint_state_t state;
+  lcmtf::joint_state_t state{};
   state.utime = utime;
   state.name = names;
   state.position = positions;

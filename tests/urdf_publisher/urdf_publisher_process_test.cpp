@@ -115,7 +115,7 @@ void writeTooLongChain(const std::string& path) {
 }
 
 void sendDescription(lcm::LCM& lcm, const std::string& urdf) {
-  robot_description_t description;
+  robot_description_t description{};
   description.utime = toUtime(now());
   description.authority = "sender";
   description.robot_name = "r";
@@ -180,7 +180,7 @@ TEST(UrdfPublisherProcess, LateJoinerGetsTheFixedJointsAndTheDescription) {
   EXPECT_TRUE(buffer.canTransform("base_link", "laser_link", kLatestTime, 5s, &why)) << why;
 
   Tap<robot_description_t> descriptions(url, kRobotDescriptionChannel);
-  resend_request_t ask;
+  resend_request_t ask{};
   ask.utime = toUtime(now());
   ask.requester = "test";
   descriptions.lcm().publish(kRobotDescriptionRequestChannel, &ask);
@@ -218,7 +218,7 @@ TEST(UrdfPublisherProcess, BadJointStatesOnTheNetworkAreReportedAndTheRestPublis
   Tap<tf_message_t> tf(url, kTfChannel);
   lcm::LCM lcm(url);
   const std::vector<std::uint8_t> garbage(64, 0x5a);
-  joint_state_t state;
+  joint_state_t state{};
   state.utime = toUtime(now());
   state.name = {"elbow_joint", "ghost", "wrist_1_joint"};
   state.position = {0.5, 1.0, std::nan("")};

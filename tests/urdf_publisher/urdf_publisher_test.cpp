@@ -45,7 +45,7 @@ struct Recorder {
 };
 
 resend_request_t request() {
-  resend_request_t message;
+  resend_request_t message{};
   message.utime = kStamp;
   message.requester = "test";
   return message;
@@ -356,7 +356,7 @@ struct DescriptionResponder {
   }
   lcm::LCM* lcm = nullptr;
   std::vector<std::vector<std::uint8_t>> before;
-  robot_description_t answer;
+  robot_description_t answer{};
   int requests = 0;
 };
 

@@ -102,7 +102,7 @@ joint_state_t JointStateGenerator::stateAt(double elapsed_seconds, TimePoint sta
   const auto givenAt = [&given](std::size_t j) {
     return j < given.size() ? given[j] : std::optional<double>();
   };
-  joint_state_t state;
+  joint_state_t state{};
   state.utime = toUtime(stamp);
   state.name = names_;
   state.position.reserve(motions_.size());

@@ -16,7 +16,7 @@ class DescriptionCatcher {
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
     if (robot) return;
     ++statistics.received;
-    robot_description_t description;
+    robot_description_t description{};
     const DecodeResult decoded = decodeMessage(buffer->data, buffer->data_size, description);
     if (!decoded.ok) {
       refuse("refused a message on " + channel + ": " + decoded.error);
@@ -46,7 +46,7 @@ class DescriptionCatcher {
 
 robot_description_t makeRobotDescription(const RobotModel& robot, const std::string& authority,
                                          TimePoint sent) {
-  robot_description_t description;
+  robot_description_t description{};
   description.utime = toUtime(sent);
   description.authority = authority;
   description.robot_name = robot.name;
@@ -61,7 +61,7 @@ std::optional<RobotModel> waitForRobotDescription(lcm::LCM& lcm,
   DescriptionCatcher catcher(options);
   lcm::Subscription* subscription =
       lcm.subscribe(options.channel, &DescriptionCatcher::onMessage, &catcher);
-  resend_request_t request;
+  resend_request_t request{};
   request.requester = options.authority;
   const auto start = std::chrono::steady_clock::now();
   auto next_request = start;

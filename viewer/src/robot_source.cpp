@@ -36,7 +36,7 @@ void RobotSource::follow() {
 void RobotSource::askIfWaiting(TimePoint now) {
   if (have_robot_ || !subscription_ || now - last_request_ < options_.request_period) return;
   last_request_ = now;
-  resend_request_t request;
+  resend_request_t request{};
   request.utime = toUtime(now);
   request.requester = options_.authority;
   lcm_.publish(options_.request_channel, &request);
@@ -44,7 +44,7 @@ void RobotSource::askIfWaiting(TimePoint now) {
 
 void RobotSource::onDescription(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
   ++statistics_.received;
-  robot_description_t description;
+  robot_description_t description{};
   const DecodeResult decoded = decodeMessage(buffer->data, buffer->data_size, description);
   if (!decoded.ok) {
     refuse("refused a message on " + channel + ": " + decoded.error);

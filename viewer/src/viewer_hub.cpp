@@ -189,7 +189,7 @@ void ViewerHub::publishJoints() {
 
 void ViewerHub::publishJointsOf(Page& page) {
   if (page.positions.empty()) return;
-  joint_state_t state;
+  joint_state_t state{};
   state.utime = toUtime(now());
   state.authority = settings_.authority + "/page-" + std::to_string(page.number);
   state.sequence = ++page.sequence;
