@@ -32,7 +32,10 @@ constexpr std::size_t kWriterFrames = 60;
 constexpr auto kWriterPeriod = std::chrono::milliseconds(1);
 constexpr auto kConcurrentWindow = std::chrono::milliseconds(400);
 constexpr int kConcurrentRounds = 5;
-constexpr int kDefaultRounds = 3;
+// Many short rounds rather than a few long ones: load from elsewhere on the machine comes in
+// bursts, and the more rounds there are, the likelier each library has one between them.
+constexpr int kDefaultRounds = 9;
+constexpr double kRoundSeconds = 0.1;
 
 const std::vector<Workload>& workloads() {
   static const std::vector<Workload> all = {makePr2Workload(), makeDeepChainWorkload(),
@@ -226,7 +229,8 @@ void addLookup(std::size_t shape, const char* kind, const std::vector<Query>& qu
   benchmark::RegisterBenchmark(benchName(Subject::kName, shape, kind).c_str(),
                                [shape, &queries, lookup](benchmark::State& state) {
                                  lookupBench<Subject>(state, shape, queries, lookup);
-                               });
+                               })
+      ->MinTime(kRoundSeconds);
 }
 
 // The benchmarks timed call by call, one kind at a time so that both libraries' runs of a
@@ -242,7 +246,8 @@ void registerTimed(std::size_t shape, Timed kind) {
     case Timed::kInsert:
       benchmark::RegisterBenchmark(
           benchName(Subject::kName, shape, "insert").c_str(),
-          [shape](benchmark::State& state) { insertBench<Subject>(state, shape); });
+          [shape](benchmark::State& state) { insertBench<Subject>(state, shape); })
+          ->MinTime(kRoundSeconds);
       break;
     case Timed::kRandom:
       addLookup<Subject>(shape, "lookup_random", w.random_pairs,
