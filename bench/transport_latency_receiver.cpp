@@ -61,7 +61,7 @@ class RawSubscriber {
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string&) {
     const std::int64_t now_us = wallMicros();
     ++received_;
-    lcmtf::tf_message_t batch{};
+    lcmtf::tf_message_t batch;
     if (lcmtf::decodeMessage(buffer->data, buffer->data_size, batch).ok &&
         !batch.transforms.empty()) {
       recorder_.record(phase_.index(batch.transforms.back().utime), now_us);

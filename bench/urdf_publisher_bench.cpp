@@ -254,7 +254,7 @@ class RawEcho {
 
  private:
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {
-    lcmtf::joint_state_t state{};
+    lcmtf::joint_state_t state;
     if (!lcmtf::decodeMessage(buffer->data, buffer->data_size, state).ok) return;
     latencies_.seen(indexOf(state.utime, base_utime_, period_us_, count_));
   }

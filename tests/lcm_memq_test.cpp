@@ -13,7 +13,7 @@ class Inbox {
  public:
   void onRawMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
     channels.push_back(channel);
-    tf_message_t message{};
+    tf_message_t message;
     const DecodeResult result = decodeMessage(buffer->data, buffer->data_size, message);
     if (result.ok) {
       messages.push_back(message);

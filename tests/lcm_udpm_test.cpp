@@ -16,7 +16,7 @@ using namespace std::chrono_literals;
 class ReplyInbox {
  public:
   void onReply(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {
-    tf_message_t reply{};
+    tf_message_t reply;
     if (decodeMessage(buffer->data, buffer->data_size, reply).ok) replies.push_back(reply);
   }
   std::vector<tf_message_t> replies;

@@ -323,7 +323,7 @@ class Recorder {
     event.datalen = static_cast<std::int32_t>(buffer->data_size);
     event.data = buffer->data;
     if (log_->writeEvent(&event) != 0) ++write_errors;
-    tf_message_t batch{};
+    tf_message_t batch;
     if (channel == kTfChannel && decodeMessage(buffer->data, buffer->data_size, batch).ok) {
       for (const transform_t& t : batch.transforms) tf_stamps.push_back(t.utime);
     }

@@ -19,7 +19,7 @@ class Echo {
       : lcm_(lcm), reply_channel_(std::move(reply_channel)) {}
 
   void onRequest(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {
-    lcmtf::tf_message_t request{};
+    lcmtf::tf_message_t request;
     const lcmtf::DecodeResult result =
         lcmtf::decodeMessage(buffer->data, buffer->data_size, request);
     if (!result.ok) {

@@ -56,7 +56,7 @@ TEST(WireDecode, EveryJointStateTruncationFails) {
 }
 
 TEST(WireDecode, EmptyInputFails) {
-  tf_message_t out{};
+  tf_message_t out;
   const DecodeResult result = decodeMessage(nullptr, 0, out);
   EXPECT_FALSE(result.ok);
   EXPECT_EQ(result.error, "tf_message_t: fingerprint: truncated: needs 8 bytes, 0 remain");
@@ -107,7 +107,7 @@ TEST(WireDecode, OverlongFrameNameIsRejectedNamingTheField) {
 TEST(WireDecode, NameAtTheLimitIsAccepted) {
   tf_message_t message = lcmtf_test::sampleTfMessage(1);
   message.transforms[0].parent_frame = std::string(256, 'p');
-  tf_message_t out{};
+  tf_message_t out;
   const std::vector<std::uint8_t> bytes = encode(message);
   EXPECT_TRUE(decodeMessage(bytes.data(), bytes.size(), out).ok);
   EXPECT_EQ(out.transforms[0].parent_frame, message.transforms[0].parent_frame);
@@ -187,7 +187,7 @@ TEST(WireDecode, GarbageNeverCrashes) {
         bytes[8 + random() % (bytes.size() - 8)] = static_cast<std::uint8_t>(random());
       }
     }
-    tf_message_t out{};
+    tf_message_t out;
     const DecodeResult result = decodeMessage(bytes.data(), bytes.size(), out);
     if (result.ok) {
       ++accepted;

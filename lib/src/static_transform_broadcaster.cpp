@@ -99,7 +99,7 @@ void StaticTransformBroadcaster::resendIfDue() {
 
 void StaticTransformBroadcaster::onRequest(const lcm::ReceiveBuffer* buffer,
                                            const std::string& /*channel*/) {
-  resend_request_t request{};
+  resend_request_t request;
   if (!decodeMessage(buffer->data, buffer->data_size, request).ok) return;
   ++requests_answered_;
   publishAll();

@@ -122,7 +122,7 @@ void TransformListener::onMessage(const lcm::ReceiveBuffer* buffer, const std::s
 
 void TransformListener::handleMessage(const void* data, std::size_t size,
                                       const std::string& channel) {
-  tf_message_t batch{};
+  tf_message_t batch;
   const DecodeResult decoded = decodeMessage(data, size, batch, options_.limits);
   if (!decoded.ok) {
     std::lock_guard<std::mutex> guard(mutex_);

@@ -61,9 +61,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::uint8_t* message = data + 1 + i * chunk;
     const std::size_t length = i + 1 == messages ? size - 1 - i * chunk : chunk;
     listener.handleMessage(message, length, (data[0] >> (2 + i)) & 1 ? "TF_STATIC" : "TF");
-    lcmtf::joint_state_t joints{};
+    lcmtf::joint_state_t joints;
     lcmtf::decodeMessage(message, length, joints);
-    lcmtf::robot_description_t description{};
+    lcmtf::robot_description_t description;
     lcmtf::decodeMessage(message, length, description);
   }
   queryEverything(buffer);

@@ -20,7 +20,7 @@ constexpr TimePoint kStamp = lcmtf_test::kToolsEpoch;
 
 struct RequestCounter {
   void onRequest(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {
-    resend_request_t request{};
+    resend_request_t request;
     if (decodeMessage(buffer->data, buffer->data_size, request))
       requesters.push_back(request.requester);
   }

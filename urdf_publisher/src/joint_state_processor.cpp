@@ -355,7 +355,7 @@ class JointStateProcessor::Impl {
   std::vector<std::uint32_t> given_this_message_;
   std::vector<std::uint32_t> given_alone_;  // given without their leader
   std::uint64_t message_serial_ = 0;
-  joint_state_t decoded_{};
+  joint_state_t decoded_;
   tf_message_t batch_{};
 };
 

@@ -16,7 +16,7 @@ class DescriptionCatcher {
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
     if (robot) return;
     ++statistics.received;
-    robot_description_t description{};
+    robot_description_t description;
     const DecodeResult decoded = decodeMessage(buffer->data, buffer->data_size, description);
     if (!decoded.ok) {
       refuse("refused a message on " + channel + ": " + decoded.error);

@@ -69,7 +69,7 @@ void UrdfPublisher::poll() {
 }
 
 void UrdfPublisher::onDescription(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
-  robot_description_t description{};
+  robot_description_t description;
   const DecodeResult decoded = decodeMessage(buffer->data, buffer->data_size, description);
   if (!decoded.ok) {
     ++descriptions_refused_;
@@ -99,7 +99,7 @@ void UrdfPublisher::onJointState(const lcm::ReceiveBuffer* buffer, const std::st
 
 void UrdfPublisher::onDescriptionRequest(const lcm::ReceiveBuffer* buffer,
                                          const std::string& /*channel*/) {
-  resend_request_t request{};
+  resend_request_t request;
   if (!decodeMessage(buffer->data, buffer->data_size, request).ok) return;
   ++description_requests_answered_;
   description_request_pending_ = true;

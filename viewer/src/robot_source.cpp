@@ -44,7 +44,7 @@ void RobotSource::askIfWaiting(TimePoint now) {
 
 void RobotSource::onDescription(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
   ++statistics_.received;
-  robot_description_t description{};
+  robot_description_t description;
   const DecodeResult decoded = decodeMessage(buffer->data, buffer->data_size, description);
   if (!decoded.ok) {
     refuse("refused a message on " + channel + ": " + decoded.error);

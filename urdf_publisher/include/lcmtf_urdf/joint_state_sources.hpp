@@ -39,7 +39,7 @@ class JointStateSources {
   std::vector<lcm::Subscription*> subscriptions_;
   std::unordered_map<std::string, std::size_t> index_of_;
   std::vector<std::optional<double>> positions_;
-  joint_state_t decoded_{};
+  joint_state_t decoded_;
   std::uint64_t malformed_ = 0;
   std::uint64_t unknown_joints_ = 0;
 };
