@@ -430,5 +430,23 @@ TEST(TimeCache, RingEndsNearTheWindowOfASteadyEdgeAndStaysSmallForAShortHistory)
   EXPECT_LE(short_history.capacity(), 20u + 20u / 4);
 }
 
+// What a listener may hold at most is the frames times the samples an edge may keep times a
+// sample's size: a ring never has room for more samples than its edge may keep, however
+// unevenly its samples come.
+TEST(TimeCache, RingNeverHasRoomForMoreSamplesThanTheEdgeMayKeep) {
+  constexpr std::size_t kMostSamples = 100;
+  constexpr std::int64_t kLongWindow = 1'000'000'000;
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<std::int64_t> gap(1, 5000);
+  TimeCache cache;
+  std::int64_t stamp = 0;
+  for (int k = 0; k < 2000; ++k) {
+    stamp += gap(rng);
+    cache.insert(sampleAt(stamp, k % 50 < 25 ? kParent : kOtherParent), kLongWindow, kMostSamples);
+    ASSERT_LE(cache.capacity(), kMostSamples) << "after " << k + 1 << " samples";
+  }
+  EXPECT_EQ(cache.size(), kMostSamples);
+}
+
 }  // namespace
 }  // namespace lcmtf::detail
