@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lcmtf/buffer_core.hpp"
+#include "support/buffer_core_helpers.hpp"
 
 namespace {
 
@@ -51,8 +52,12 @@ void operator delete[](void* memory, std::size_t, std::align_val_t) noexcept { s
 namespace lcmtf {
 namespace {
 
-constexpr std::int64_t kStart = 1'700'000'000'000'000;
-constexpr std::int64_t kPeriod = 10'000;
+using lcmtf_test::kEpoch;
+using lcmtf_test::pose;
+using lcmtf_test::put;
+using lcmtf_test::putStatic;
+
+constexpr Duration kPeriod = std::chrono::milliseconds(10);
 constexpr int kSamples = 200;
 
 // Names longer than a string holds in place, so that a result that allocated would show.
@@ -64,31 +69,25 @@ const char* const kForearm = "left_arm_forearm_roll_link";
 const char* const kCamera = "left_forearm_camera_optical_frame";
 const char* const kGripper = "left_gripper_palm_link_frame";
 
-TransformStamped edge(const char* parent, const char* child, std::int64_t utime, double x) {
-  TransformStamped t;
-  t.parent_frame = parent;
-  t.child_frame = child;
-  t.stamp = fromUtime(utime);
-  t.transform.translation = Eigen::Vector3d(x, 0.1, 0.2);
-  t.transform.rotation =
-      Eigen::Quaterniond(Eigen::AngleAxisd(0.01 * x, Eigen::Vector3d::UnitZ())).normalized();
-  return t;
+// A pose that moves with `x`, as a moving edge's samples do.
+Transform moving(double x) {
+  return pose(Eigen::Vector3d(x, 0.1, 0.2), 0.01 * x, Eigen::Vector3d::UnitZ());
 }
 
 // map -> odom -> base -> shoulder -> forearm -> camera, with a static link and a static camera,
 // and a gripper that moves from the shoulder to the forearm halfway through its history when
 // `gripper_changes_parent`.
 void fill(BufferCore& buffer, bool gripper_changes_parent) {
-  buffer.setTransform(edge(kBase, kShoulder, 0, 0.3), "test", true);
-  buffer.setTransform(edge(kForearm, kCamera, 0, 0.05), "test", true);
+  putStatic(buffer, kBase, kShoulder, moving(0.3));
+  putStatic(buffer, kForearm, kCamera, moving(0.05));
   for (int k = 0; k < kSamples; ++k) {
-    const std::int64_t t = kStart + k * kPeriod;
+    const TimePoint t = kEpoch + k * kPeriod;
     const double x = 0.001 * k;
-    buffer.setTransform(edge(kMap, kOdom, t, x), "test");
-    buffer.setTransform(edge(kOdom, kBase, t + 3'000, 2 * x), "test");
-    buffer.setTransform(edge(kShoulder, kForearm, t + 7'000, 3 * x), "test");
+    put(buffer, kMap, kOdom, t, moving(x));
+    put(buffer, kOdom, kBase, t + std::chrono::milliseconds(3), moving(2 * x));
+    put(buffer, kShoulder, kForearm, t + std::chrono::milliseconds(7), moving(3 * x));
     const char* gripper_parent = gripper_changes_parent && k >= kSamples / 2 ? kForearm : kShoulder;
-    buffer.setTransform(edge(gripper_parent, kGripper, t + 5'000, 4 * x), "test");
+    put(buffer, gripper_parent, kGripper, t + std::chrono::milliseconds(5), moving(4 * x));
   }
 }
 
@@ -110,7 +109,8 @@ std::vector<Query> queries(const BufferCore& buffer) {
       if (a == b) continue;
       out.push_back({frames[a], frames[b], kLatestTime});
       for (int k = 2; k < kSamples - 2; k += 37) {
-        out.push_back({frames[a], frames[b], fromUtime(kStart + k * kPeriod + 4'321)});
+        out.push_back(
+            {frames[a], frames[b], kEpoch + k * kPeriod + std::chrono::microseconds(4'321)});
       }
     }
   }
