@@ -171,6 +171,28 @@ TEST(WireDecode, FailedDecodeOfJointStateNamesPositionCount) {
               HasSubstr("joint_state_t: num_positions: truncated: count 1000 needs"));
 }
 
+TEST(WireDecode, AReusedMessageKeepsNothingOfThePreviousOneWhereTheNewOneIsEmpty) {
+  joint_state_t state;
+  const std::vector<std::uint8_t> full = encode(lcmtf_test::sampleJointState());
+  ASSERT_TRUE(decodeMessage(full.data(), full.size(), state).ok);
+  ASSERT_FALSE(state.position.empty());
+  joint_state_t names_only = lcmtf_test::sampleJointState();
+  names_only.num_positions = names_only.num_velocities = names_only.num_efforts = 0;
+  names_only.position.clear();
+  names_only.velocity.clear();
+  names_only.effort.clear();
+  const std::vector<std::uint8_t> bytes = encode(names_only);
+  ASSERT_TRUE(decodeMessage(bytes.data(), bytes.size(), state).ok);
+  lcmtf_test::expectEqual(state, names_only);
+
+  tf_message_t batch;
+  const std::vector<std::uint8_t> three = encode(lcmtf_test::sampleTfMessage(3));
+  ASSERT_TRUE(decodeMessage(three.data(), three.size(), batch).ok);
+  const std::vector<std::uint8_t> none = encode(lcmtf_test::sampleTfMessage(0));
+  ASSERT_TRUE(decodeMessage(none.data(), none.size(), batch).ok);
+  EXPECT_TRUE(batch.transforms.empty());
+}
+
 // Random bytes behind a valid fingerprint, and random corruptions of valid messages: decoding
 // either succeeds or fails with a reason; it never crashes, hangs or allocates wildly.
 TEST(WireDecode, GarbageNeverCrashes) {

@@ -172,6 +172,19 @@ bool skimBody(WireSkimmer& wire, const robot_description_t*) {
          wire.skipString("urdf", kUnbounded);
 }
 
+// LCM's generated decode resizes an array only when its count is non-zero, so decoding into a
+// reused message would keep the previous message's elements wherever this one has none.
+void emptyArrays(tf_message_t& message) { message.transforms.clear(); }
+void emptyArrays(joint_state_t& message) {
+  message.name.clear();
+  message.position.clear();
+  message.velocity.clear();
+  message.effort.clear();
+}
+void emptyArrays(transform_t&) {}
+void emptyArrays(resend_request_t&) {}
+void emptyArrays(robot_description_t&) {}
+
 std::string hex(std::int64_t value) {
   char text[24];
   std::snprintf(text, sizeof text, "0x%016llx",
@@ -214,6 +227,7 @@ DecodeResult decodeMessage(const void* data, std::size_t size, Message& out,
                    " unexpected bytes after the end of the message";
     return result;
   }
+  emptyArrays(out);
   try {
     const int decoded = out.decode(data, 0, static_cast<int>(size));
     if (decoded != static_cast<int>(size)) {

@@ -209,6 +209,18 @@ TEST_F(JointStateProcessorTest, NameAndPositionCountMismatchRejectsTheMessage) {
   EXPECT_NE(processor.process(jointState(kStamp, {"elbow_joint"}, {0.1})), nullptr);
 }
 
+TEST_F(JointStateProcessorTest, EncodedStateWithoutPositionsIsRefusedNotGivenTheLastOnes) {
+  JointStateProcessor processor(robot, options());
+  const auto full = lcmtf_test::encode(jointState(kStamp, {"elbow_joint"}, {0.1}));
+  ASSERT_NE(processor.process(full.data(), full.size()), nullptr);
+  const auto names_only = lcmtf_test::encode(jointState(kStamp + 1, {"elbow_joint"}, {}));
+  EXPECT_EQ(processor.process(names_only.data(), names_only.size()), nullptr);
+  EXPECT_EQ(processor.statistics().length_mismatches, 1u);
+  const auto empty = lcmtf_test::encode(jointState(kStamp + 2, {}, {}));
+  EXPECT_EQ(processor.process(empty.data(), empty.size()), nullptr);
+  EXPECT_EQ(processor.statistics().length_mismatches, 1u) << "an empty state is not a mismatch";
+}
+
 TEST_F(JointStateProcessorTest, BytesThatDoNotDecodeAreCountedAndReportedOnce) {
   JointStateProcessor processor(robot, options());
   const std::vector<std::uint8_t> garbage{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
