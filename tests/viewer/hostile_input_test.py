@@ -260,7 +260,7 @@ def check_websocket(port):
     # Many pages at once, each dropped mid-message: the server lives on.
     for _ in range(20):
         with socket.create_connection(("127.0.0.1", port), timeout=5) as raw:
-            raw.sendall(b"GET /ws HTTP/1.1\r\nHost: x\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
+            raw.sendall(b"GET /ws HTTP/1.1\r\nHost: 127.0.0.1\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
                         b"Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n"
                         b"\x81\xff\x00\x00\x00\x00\x7f\xff\xff\xff")
     page = Page(port)

@@ -109,14 +109,15 @@ class WebServerTest : public ::testing::Test {
     return answer;
   }
   std::string get(const std::string& target) {
-    return raw("GET " + target + " HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
+    return raw("GET " + target + " HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n");
   }
 
   // The answer to a WebSocket upgrade request for `target`, when it is refused.
-  std::string upgrade(const std::string& target) {
+  std::string upgrade(const std::string& target, const std::string& more_headers = "") {
     return raw("GET " + target +
-               " HTTP/1.1\r\nHost: x\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
-               "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n");
+               " HTTP/1.1\r\nHost: localhost\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
+               "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n" +
+               more_headers + "\r\n");
   }
 
   struct Client {
@@ -128,11 +129,16 @@ class WebServerTest : public ::testing::Test {
       return beast::buffers_to_string(buffer.data());
     }
   };
-  std::unique_ptr<Client> connect() {
+  std::unique_ptr<Client> connect(const std::string& origin = "") {
     auto client = std::make_unique<Client>();
     client->socket.next_layer().connect(
         tcp::endpoint(asio::ip::make_address("127.0.0.1"), server_->port()));
-    client->socket.handshake("127.0.0.1", "/ws");
+    const std::string host = "127.0.0.1:" + std::to_string(server_->port());
+    if (!origin.empty()) {
+      client->socket.set_option(websocket::stream_base::decorator(
+          [origin](websocket::request_type& request) { request.set("Origin", origin); }));
+    }
+    client->socket.handshake(host, "/ws");
     return client;
   }
 
@@ -147,7 +153,7 @@ TEST_F(WebServerTest, ServesListedFilesWithTypeAndLength) {
   EXPECT_NE(answer.find("Content-Type: text/html; charset=utf-8\r\n"), std::string::npos);
   EXPECT_NE(answer.find("Content-Length: 11\r\n"), std::string::npos);
   EXPECT_NE(answer.find("\r\n\r\n<p>page</p>"), std::string::npos);
-  const std::string head = raw("HEAD / HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
+  const std::string head = raw("HEAD / HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n");
   EXPECT_NE(head.find("Content-Length: 11\r\n"), std::string::npos);
   EXPECT_EQ(head.find("<p>"), std::string::npos);
   EXPECT_EQ(server_->statistics().files_sent.load(), 2u);
@@ -162,7 +168,7 @@ TEST_F(WebServerTest, RefusesTraversalUnknownPathsAndOtherMethods) {
   }
   EXPECT_EQ(get("/etc/passwd").rfind("HTTP/1.1 404 Not Found\r\n", 0), 0u);
   const std::string post =
-      raw("POST / HTTP/1.1\r\nHost: x\r\nContent-Length: 3\r\nConnection: close\r\n\r\nabc");
+      raw("POST / HTTP/1.1\r\nHost: localhost\r\nContent-Length: 3\r\nConnection: close\r\n\r\nabc");
   EXPECT_EQ(post.rfind("HTTP/1.1 405 Method Not Allowed\r\n", 0), 0u) << post;
   EXPECT_NE(post.find("Allow: GET, HEAD\r\n"), std::string::npos);
   EXPECT_EQ(raw("GARBAGE\r\n\r\n"), "");  // not HTTP: closed unanswered
@@ -171,8 +177,8 @@ TEST_F(WebServerTest, RefusesTraversalUnknownPathsAndOtherMethods) {
 
 TEST_F(WebServerTest, KeepsAConnectionAliveForSeveralRequests) {
   const std::string answer =
-      raw("GET / HTTP/1.1\r\nHost: x\r\n\r\nGET /nothing HTTP/1.1\r\nHost: x\r\n\r\n"
-          "GET / HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
+      raw("GET / HTTP/1.1\r\nHost: localhost\r\n\r\nGET /nothing HTTP/1.1\r\nHost: localhost\r\n\r\n"
+          "GET / HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n");
   EXPECT_EQ(std::count(answer.begin(), answer.end(), '\n') > 10, true);
   std::size_t oks = 0;
   for (std::size_t at = answer.find("200 OK"); at != std::string::npos;
@@ -240,6 +246,56 @@ TEST_F(WebServerTest, MorePagesThanAllowedAreRefusedWith503) {
 TEST_F(WebServerTest, WebSocketsElsewhereThanWsAreNotFound) {
   EXPECT_EQ(upgrade("/other").rfind("HTTP/1.1 404 Not Found\r\n", 0), 0u);
   EXPECT_EQ(upgrade("/ws/../ws").rfind("HTTP/1.1 400 Bad Request\r\n", 0), 0u);
+}
+
+TEST_F(WebServerTest, RequestsNamingAnotherHostAreRefused) {
+  const std::string rebound =
+      raw("GET / HTTP/1.1\r\nHost: attacker.example:8080\r\nConnection: close\r\n\r\n");
+  EXPECT_EQ(rebound.rfind("HTTP/1.1 403 Forbidden\r\n", 0), 0u) << rebound;
+  EXPECT_NE(rebound.find("--allow-host attacker.example"), std::string::npos) << rebound;
+  EXPECT_EQ(rebound.find("<p>page</p>"), std::string::npos);
+  const std::string page =
+      raw("GET / HTTP/1.1\r\nHost: 127.0.0.1:1234\r\nConnection: close\r\n\r\n");
+  EXPECT_EQ(page.rfind("HTTP/1.1 200 OK\r\n", 0), 0u) << page;
+}
+
+TEST_F(WebServerTest, OnlyTheViewersOwnPagesMayOpenTheWebSocket) {
+  const std::string other = upgrade("/ws", "Origin: http://attacker.example\r\n");
+  EXPECT_EQ(other.rfind("HTTP/1.1 403 Forbidden\r\n", 0), 0u) << other;
+  EXPECT_NE(other.find("'http://attacker.example' may not open"), std::string::npos) << other;
+  EXPECT_EQ(upgrade("/ws", "Origin: http://localhost:1\r\n").rfind("HTTP/1.1 403", 0), 0u)
+      << "another port is another origin";
+  EXPECT_EQ(upgrade("/ws", "Origin: null\r\n").rfind("HTTP/1.1 403", 0), 0u);
+  auto own = connect("http://127.0.0.1:" + std::to_string(server_->port()));
+  EXPECT_EQ(own->read(), "hello");
+  auto no_origin_so_not_a_browser = connect();
+  EXPECT_EQ(no_origin_so_not_a_browser->read(), "hello");
+}
+
+TEST(WebServerHosts, AllowedHostsAndOriginsAreAnsweredToo) {
+  ServedFiles files;
+  class NoPages : public WebHandler {
+    const ServedFile* findFile(std::string_view) override { return nullptr; }
+    void pageOpened(const std::shared_ptr<PageLink>& page) override { page->close(1000, "ok"); }
+    void pageMessage(PageLink&, std::string_view, bool) override {}
+    void pageClosed(PageLink&) override {}
+    void serverStopping() override {}
+  } handler;
+  WebServerOptions options;
+  options.port = 0;
+  options.allowed_hosts = {"robot.lab"};
+  options.allowed_origins = {"http://dashboard.lab:3000"};
+  WebServer server(options, handler);
+  server.start();
+  asio::io_context io;
+  websocket::stream<tcp::socket> socket(io);
+  socket.next_layer().connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"), server.port()));
+  socket.set_option(websocket::stream_base::decorator([](websocket::request_type& request) {
+    request.set("Origin", "http://dashboard.lab:3000");
+  }));
+  beast::error_code error;
+  socket.handshake("ROBOT.lab:8080", "/ws", error);
+  EXPECT_FALSE(error) << error.message();
 }
 
 TEST_F(WebServerTest, TheHandlerClosesAPageWithItsCodeAndReason) {

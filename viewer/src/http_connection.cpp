@@ -8,6 +8,11 @@ namespace {
 
 constexpr std::size_t kMaxRequestHeaderBytes = 8 * 1024;
 
+std::string_view headerValue(const http::request<http::empty_body>& request, http::field field) {
+  const auto value = request[field];
+  return {value.data(), value.size()};
+}
+
 }  // namespace
 
 HttpConnection::HttpConnection(tcp::socket socket, ServerState& state)
@@ -58,10 +63,21 @@ void HttpConnection::answer(const http::request<http::empty_body>& request) {
     refuse(http::status::bad_request, *why, request.version(), false);
     return;
   }
+  const std::string_view host = headerValue(request, http::field::host);
+  if (request.find(http::field::host) != request.end()) {
+    if (const auto why = state_.hosts.refuseHost(host)) {
+      refuse(http::status::forbidden, *why, request.version(), false);
+      return;
+    }
+  }
   if (websocket::is_upgrade(request)) {
+    const auto why_not_this_page =
+        state_.hosts.refuseOrigin(headerValue(request, http::field::origin), host);
     if (target != "/ws") {
       refuse(http::status::not_found, "WebSockets are served at /ws only", request.version(),
              false);
+    } else if (why_not_this_page) {
+      refuse(http::status::forbidden, *why_not_this_page, request.version(), false);
     } else if (state_.open_pages >= state_.options.max_pages) {
       refuse(http::status::service_unavailable, "too many pages are open", request.version(),
              false);

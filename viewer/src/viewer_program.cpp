@@ -76,6 +76,18 @@ std::optional<int> parseViewerCommandLine(const std::vector<std::string>& args,
                  "can reach this one")
       ->type_name("ADDRESS")
       ->capture_default_str();
+  app.add_option("--allow-host", options.allowed_hosts,
+                 "A name the page may be reached under, besides IP addresses, localhost and this "
+                 "machine's name (repeatable; * for any). Requests naming another host are "
+                 "refused, so that no web page can reach the viewer under a name of its own")
+      ->type_name("NAME")
+      ->allow_extra_args(false);
+  app.add_option("--allow-origin", options.allowed_origins,
+                 "A web page, as http://host:port, that may open the viewer's WebSocket besides "
+                 "the viewer's own (repeatable; * for any): it sees the robot and can move its "
+                 "joints")
+      ->type_name("ORIGIN")
+      ->allow_extra_args(false);
   app.add_option("--lcm-url", options.lcm_url,
                  "LCM URL to listen and publish on (default: $LCM_DEFAULT_URL, else " +
                      std::string(programs::lcmBuiltInDefaultUrl()) + ")")
@@ -184,6 +196,8 @@ int runViewer(const ViewerOptions& options, std::ostream& out, std::ostream& err
   WebServerOptions serving;
   serving.bind_address = options.bind_address;
   serving.port = static_cast<std::uint16_t>(options.port);
+  serving.allowed_hosts = options.allowed_hosts;
+  serving.allowed_origins = options.allowed_origins;
   std::unique_ptr<WebServer> server;
   try {
     server = std::make_unique<WebServer>(serving, hub);

@@ -16,6 +16,7 @@
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
 
+#include "lcmtf_viewer/host_policy.hpp"
 #include "lcmtf_viewer/web_server.hpp"
 
 namespace lcmtf::viewer::web {
@@ -27,8 +28,14 @@ using tcp = boost::asio::ip::tcp;
 
 /// What every connection shares with the server; touched on the server's thread only.
 struct ServerState {
+  ServerState(WebHandler& server_handler, const WebServerOptions& server_options)
+      : handler(server_handler),
+        options(server_options),
+        hosts(options.allowed_hosts, options.allowed_origins) {}
+
   WebHandler& handler;
   WebServerOptions options;
+  HostPolicy hosts;
   WebServerStatistics statistics;
   std::size_t open_connections = 0;
   std::size_t open_pages = 0;

@@ -17,7 +17,7 @@ using web::tcp;
 class WebServer::Impl {
  public:
   Impl(const WebServerOptions& options, WebHandler& handler)
-      : io_(1), acceptor_(io_), state_{handler, options, {}, 0, 0} {
+      : io_(1), acceptor_(io_), state_(handler, options) {
     boost::system::error_code error;
     const auto address = boost::asio::ip::make_address(options.bind_address, error);
     if (error) {

@@ -15,6 +15,8 @@ namespace lcmtf::viewer {
 struct ViewerOptions {
   std::string bind_address = "127.0.0.1";
   int port = 8080;
+  std::vector<std::string> allowed_hosts;
+  std::vector<std::string> allowed_origins;
   std::string lcm_url;
   std::string tf_channel = kTfChannel;
   std::string static_channel = kTfStaticChannel;

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "lcmtf_viewer/served_files.hpp"
 
@@ -44,12 +45,14 @@ struct WebServerOptions {
   std::size_t max_pages = 64;                 ///< WebSockets at once; more get 503
   std::size_t max_message_bytes = 64 * 1024;  ///< larger page messages close it with 1009
   std::chrono::seconds idle_timeout{30};      ///< an HTTP connection that sends nothing
+  std::vector<std::string> allowed_hosts;     ///< see HostPolicy
+  std::vector<std::string> allowed_origins;   ///< see HostPolicy
 };
 
 /// What the server has done and refused since it started.
 struct WebServerStatistics {
   std::atomic<std::uint64_t> files_sent{0};
-  std::atomic<std::uint64_t> requests_refused{0};  ///< bad path, method, or not found
+  std::atomic<std::uint64_t> requests_refused{0};  ///< bad path, method, host, or not found
   std::atomic<std::uint64_t> connections_refused{0};
   std::atomic<std::uint64_t> pages_opened{0};
   std::atomic<std::uint64_t> messages_too_large{0};
