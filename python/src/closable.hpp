@@ -7,10 +7,19 @@
 
 #include <memory>
 #include <string>
+#include "later_close.hpp"
+#include "lcmtf/transform_listener.hpp"
 
 namespace lcmtf::python {
 
 namespace py = pybind11;
+
+/// Whether the caller is a thread `object` owns and joins when destroyed.
+template <class Object>
+bool onItsThread(const Object&) {
+  return false;
+}
+inline bool onItsThread(const TransformListener& listener) { return listener.onItsThread(); }
 
 template <class Object>
 class Closable {
@@ -28,8 +37,18 @@ class Closable {
     return *object_;
   }
   /// Stops it with the GIL released: its thread may be waiting for the GIL to call back.
+  /// Closed from its own thread (inside its reporter), it is stopped from another one, once the
+  /// call back returns.
   void close() {
     py::gil_scoped_release release;
+    if (object_ && onItsThread(*object_)) {
+      closeLater([object = std::shared_ptr<Object>(std::move(object_)),
+                  keep_alive = std::move(keep_alive_)]() mutable {
+        object.reset();
+        keep_alive.reset();
+      });
+      return;
+    }
     object_.reset();
   }
 

@@ -8,6 +8,7 @@ import threading
 import time
 
 import numpy as np
+import pytest
 
 import lcmtf
 from conftest import pose_matrix, quaternion
@@ -90,6 +91,38 @@ def test_cpp_listener_hears_python_broadcasters(udpm_url, program):
     np.testing.assert_allclose(numbers(r"translation \(m\)"), expected[:3, 3], atol=1e-8)
     reported = pose_matrix([0, 0, 0], numbers("quaternion xyzw"))
     np.testing.assert_allclose(reported[:3, :3], expected[:3, :3], atol=1e-8)
+
+
+def refuse_intruders_until(udpm_url, done):
+    with lcmtf.TransformBroadcaster(udpm_url, authority="intruder") as broadcaster:
+        for _ in range(200):
+            broadcaster.send_transform(lcmtf.TransformStamped("map", "base", time.time()))
+            if done.wait(0.01):
+                return
+    raise AssertionError("the listener's reporter was never called")
+
+
+@pytest.mark.parametrize("how", ["close", "drop the last reference"])
+def test_a_listener_closed_from_inside_its_own_reporter_stops(udpm_url, how):
+    holder = {}
+    done = threading.Event()
+
+    def close_it(message):
+        if how == "close":
+            holder["listener"].close()
+        else:
+            del holder["listener"]
+        done.set()
+
+    holder["listener"] = lcmtf.TransformListener(lcmtf.Buffer(), udpm_url,
+                                                 allowed_authorities=["trusted"],
+                                                 reporter=close_it)
+    refuse_intruders_until(udpm_url, done)
+    if how == "close":
+        with pytest.raises(ValueError, match="closed"):
+            holder["listener"].statistics()
+    else:
+        assert "listener" not in holder
 
 
 def test_listener_reports_a_refusal_to_a_python_callable(udpm_url):

@@ -41,7 +41,8 @@ struct ListenerOptions {
   /// When not zero, set on the buffer at start (BufferCore::setMaxInterpolationGap): lookups
   /// between samples further apart, as after lost batches, fail instead of interpolating.
   Duration max_interpolation_gap = Duration::zero();
-  /// Where the first refusal of each kind is reported; null: nowhere. Default: stderr.
+  /// Where the first refusal of each kind is reported; null: nowhere. Default: stderr. It is
+  /// called on the listener's thread, which cannot destroy the listener (see onItsThread).
   std::function<void(const std::string& message)> reporter = [](const std::string& message) {
     std::cerr << "lcmtf listener: " << message << '\n';
   };
@@ -100,6 +101,10 @@ class TransformListener {
   ListenerStatistics statistics() const;
   /// Per sender followed now: those heard more than once first, each group the most recent first.
   std::vector<AuthorityStatistics> authorityStatistics() const;
+
+  /// Whether the caller is the thread the listener owns, as its reporter is: the listener must
+  /// be destroyed from another thread, as its destructor waits for that one to end.
+  bool onItsThread() const { return std::this_thread::get_id() == thread_.get_id(); }
 
   /// Handles one encoded tf_message_t as if it had arrived on `channel` (replay, tests).
   void handleMessage(const void* data, std::size_t size, const std::string& channel);
