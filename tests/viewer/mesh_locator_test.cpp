@@ -64,6 +64,10 @@ TEST_F(MeshLocator, RefusesPackageNamesThatLeadOutOfThePackage) {
   EXPECT_FALSE(refused("package://arm/meshes/").empty());          // a folder
   EXPECT_EQ(refused("package://arm"), "'package://arm' names no file inside a package");
   EXPECT_FALSE(refused("package://nothing/base.stl").empty());
+  EXPECT_EQ(refused("package://../secret.txt"),
+            "'package://../secret.txt': '..' is not a package name");
+  EXPECT_EQ(refused("package://./arm/meshes/base.stl"),
+            "'package://./arm/meshes/base.stl': '.' is not a package name");
 }
 
 TEST_F(MeshLocator, ServesAbsoluteAndFileNamesOnlyInsideThePackagePaths) {

@@ -37,6 +37,9 @@ std::variant<std::filesystem::path, std::string> locatePackageFile(const std::st
     return "'" + filename + "' names no file inside a package";
   }
   const std::string package = rest.substr(0, slash);
+  if (package == "." || package == ".." || package.find('\\') != std::string::npos) {
+    return "'" + filename + "': '" + package + "' is not a package name";
+  }
   const std::filesystem::path relative = rest.substr(slash + 1);
   std::error_code error;
   for (const std::filesystem::path& folder : search.package_paths) {
