@@ -15,11 +15,13 @@ int report(const char* name, lcmtf_bench::RealtimeThread realtime, int seconds) 
     std::printf("%-40s not run: %s\n", name, result.why_not.c_str());
     return 1;
   }
-  std::printf("%-40s worst lookup %6.3f ms (at %6.3f s)   batches stored %llu of %llu   lookups %llu\n",
+  std::printf("%-40s worst lookup %6.3f ms (at %6.3f s)   batches stored %llu of %llu, one "
+              "every %lld us   lookups %llu\n",
               name, std::chrono::duration<double, std::milli>(result.worst_lookup).count(),
               std::chrono::duration<double>(result.worst_lookup_at).count(),
               static_cast<unsigned long long>(result.batches_stored),
               static_cast<unsigned long long>(result.batches_due),
+              static_cast<long long>(result.batch_period.count()),
               static_cast<unsigned long long>(result.lookups));
   return 0;
 }

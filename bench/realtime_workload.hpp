@@ -3,6 +3,9 @@
 // A robot's real-time set-up on one core: a receive thread stores a batch of transforms every
 // millisecond while a control thread looks up for 500 us, then sleeps for 500 us; either of
 // them may run under SCHED_FIFO. Reports the slowest lookup and how many batches got stored.
+// Where storing a batch takes more than a quarter of a millisecond (a sanitizer build, a slow
+// machine), batches come at four times that period instead, so that the receiver's own work
+// leaves the core room and only a waiter that spins could starve the other thread.
 #include <pthread.h>
 #include <sched.h>
 
@@ -28,6 +31,7 @@ enum class RealtimeThread { kLookups, kReceiver, kLookupsAlone };
 struct RealtimeResult {
   bool permitted = true;  // false: SCHED_FIFO or pinning refused, `why_not` says why
   std::string why_not;
+  std::chrono::microseconds batch_period{1000};
   std::uint64_t batches_due = 0;
   std::uint64_t batches_stored = 0;
   std::uint64_t lookups = 0;
@@ -87,9 +91,19 @@ inline RealtimeResult runRealtimeWorkload(RealtimeThread realtime, std::chrono::
   RealtimeResult result;
   // A receiver that has been running for a while: every edge holds its full history.
   lcmtf::BufferCore buffer(std::chrono::seconds(2));
+  std::chrono::nanoseconds slowest_of_last_batches{0};
   for (std::int64_t millisecond = -2500; millisecond <= 0; ++millisecond) {
-    buffer.setTransforms(batchAt(millisecond), "receiver");
+    const std::vector<lcmtf::TransformStamped> batch = batchAt(millisecond);
+    const Clock::time_point before = Clock::now();
+    buffer.setTransforms(batch, "receiver");
+    if (millisecond > -100) {
+      slowest_of_last_batches = std::max(slowest_of_last_batches, Clock::now() - before);
+    }
   }
+  using std::chrono::microseconds;
+  const microseconds period = std::max(
+      microseconds(1000), std::chrono::duration_cast<microseconds>(4 * slowest_of_last_batches));
+  result.batch_period = period;
   const int cpu = std::max(0, sched_getcpu());
   std::atomic<bool> refused{false};
   std::string receiver_problem;
@@ -103,16 +117,16 @@ inline RealtimeResult runRealtimeWorkload(RealtimeThread realtime, std::chrono::
     if (!receiver_problem.empty()) refused = true;
     ++ready;
     std::this_thread::sleep_until(start);
-    std::int64_t millisecond = 1;
+    std::int64_t batch = 1;
     while (!refused && realtime != RealtimeThread::kLookupsAlone) {
-      const Clock::time_point due = start + std::chrono::milliseconds(millisecond);
+      const Clock::time_point due = start + batch * period;
       if (due >= end) break;
       std::this_thread::sleep_until(due);
-      buffer.setTransforms(batchAt(millisecond), "receiver");
+      buffer.setTransforms(batchAt(batch * period.count() / 1000), "receiver");
       ++result.batches_stored;
-      ++millisecond;
+      ++batch;
       // Batches more than kBacklog late are lost, as LCM drops them from a full queue.
-      while (start + std::chrono::milliseconds(millisecond) + kBacklog < Clock::now()) ++millisecond;
+      while (start + batch * period + kBacklog < Clock::now()) ++batch;
     }
   });
   std::thread control([&] {
@@ -148,7 +162,7 @@ inline RealtimeResult runRealtimeWorkload(RealtimeThread realtime, std::chrono::
   control.join();
   result.batches_due = realtime == RealtimeThread::kLookupsAlone
                            ? 0
-                           : static_cast<std::uint64_t>(duration / std::chrono::milliseconds(1)) - 1;
+                           : static_cast<std::uint64_t>(duration / period) - 1;
   if (refused) {
     result.permitted = false;
     result.why_not = !receiver_problem.empty() ? receiver_problem : lookup_problem;
