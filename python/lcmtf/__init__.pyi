@@ -96,7 +96,9 @@ class AuthorityStatistics:
     resets_held_back: Final[int]
 
 class Buffer:
-    def __init__(self, cache_time: float = 10.0) -> None: ...
+    def __init__(
+        self, cache_time: float = 10.0, *, reporter: Optional[Callable[[str], object]] = None
+    ) -> None: ...
     @property
     def cache_time(self) -> float: ...
     @property

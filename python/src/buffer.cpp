@@ -7,17 +7,21 @@
 #include "arguments.hpp"
 #include "bindings.hpp"
 #include "buffer_class.hpp"
+#include "python_callback.hpp"
 
 namespace lcmtf::python {
 
 namespace {
 
-BufferPtr makeBuffer(FloatArg cache_time) {
+BufferPtr makeBuffer(FloatArg cache_time, py::handle reporter) {
   const Duration history = duration(cache_time, "cache_time");
   if (history == Duration::zero()) {
     throw py::value_error("cache_time must be more than 0 seconds");
   }
-  return std::make_shared<Buffer>(history);
+  auto report = optionalMessageCallback(reporter, "reporter", "lcmtf buffer reporter");
+  auto buffer = std::make_shared<Buffer>(history);
+  if (report) buffer->setErrorReporter(std::move(report));
+  return buffer;
 }
 
 void defineInserts(BufferClass& buffer_class) {
@@ -31,8 +35,8 @@ void defineInserts(BufferClass& buffer_class) {
       "Stores transform (parent_frame_T_child_frame) at its stamp, or for all time when "
       "is_static. Returns False when the buffer refuses it (empty or equal frame names, a "
       "quaternion far from unit length, a stamp older than the history kept): the buffer is "
-      "unchanged, statistics() counts the reason and the first of each kind is reported on "
-      "stderr.");
+      "unchanged, statistics() counts the reason and the first of each kind goes to the "
+      "buffer's reporter.");
   buffer_class.def(
       "set_transforms",
       [](Buffer& buffer, py::handle transforms, StrArg authority, bool is_static) {
@@ -96,9 +100,12 @@ void bindBuffer(py::module_& module) {
       "The frame tree over time: each edge's recent history and the static edges, and lookups "
       "between any two frames at any stored time. Fill it with a TransformListener, or by "
       "hand with set_transform. Any number of threads may look up while others insert.");
-  buffer_class.def(py::init(&makeBuffer), py::arg("cache_time") = 10.0,
+  buffer_class.def(py::init(&makeBuffer), py::arg("cache_time") = 10.0, py::kw_only(),
+                   py::arg("reporter") = py::none(),
                    "`cache_time`: seconds of history each dynamic edge keeps behind its newest "
-                   "sample.");
+                   "sample. `reporter(message)` gets the first transform refused for each reason "
+                   "(None: printed on stderr), from the thread that inserted it: a listener's or "
+                   "the caller's.");
   defineInserts(buffer_class);
   defineLookups(buffer_class);
   definePointClouds(buffer_class);

@@ -24,16 +24,6 @@ BufferPtr bufferArgument(py::handle value) {
   return value.cast<BufferPtr>();
 }
 
-std::function<void(const std::string&)> reporterArgument(py::handle value,
-                                                         const ListenerOptions& defaults) {
-  if (value.is_none()) return defaults.reporter;
-  if (!PyCallable_Check(value.ptr())) {
-    throw py::type_error(std::string("reporter must be callable or None, not ") +
-                         Py_TYPE(value.ptr())->tp_name);
-  }
-  return messageCallback(py::reinterpret_borrow<py::object>(value), "lcmtf listener reporter");
-}
-
 std::unique_ptr<Listener> makeListener(py::handle buffer_arg, OptionalStrArg lcm_url,
                                        StrArg channel, StrArg static_channel,
                                        StrArg static_request_channel, bool static_only,
@@ -59,7 +49,9 @@ std::unique_ptr<Listener> makeListener(py::handle buffer_arg, OptionalStrArg lcm
   options.max_interpolation_gap = duration(max_interpolation_gap, "max_interpolation_gap");
   options.limits.max_name_bytes = count(max_name_bytes, "max_name_bytes", 1);
   options.limits.max_array_elements = count(max_array_elements, "max_array_elements", 1);
-  options.reporter = reporterArgument(reporter, defaults);
+  options.reporter = reporter.is_none()
+                         ? defaults.reporter
+                         : optionalMessageCallback(reporter, "reporter", "lcmtf listener reporter");
   auto listener = std::make_unique<TransformListener>(*buffer, std::move(options));
   return std::make_unique<Listener>(std::move(listener), "listener", buffer);
 }
@@ -93,8 +85,9 @@ void bindListener(py::module_& module) {
       "queues per channel; `authority` names it in its requests (None: program@host:pid); "
       "request_statics_at_start False leaves request_statics() to the caller; "
       "max_interpolation_gap (seconds, 0.0 for none) is set on the buffer; max_name_bytes and "
-      "max_array_elements bound incoming messages; `reporter(message)` gets the first refusal "
-      "of each kind (None: printed on stderr), from the listener's thread.");
+      "max_array_elements bound incoming messages; `reporter(message)` gets the first message "
+      "of each kind the listener refuses (None: printed on stderr), from the listener's thread; "
+      "transforms the buffer refuses go to the buffer's reporter (see Buffer).");
   listener_class.def(
       "request_statics", [](const Listener& self) { self.get().requestStatics(); },
       "Asks every static broadcaster to resend its set now.");

@@ -30,4 +30,17 @@ inline std::function<void(const std::string&)> messageCallback(py::object callab
   };
 }
 
+/// messageCallback for an optional callable argument: empty when it is None, TypeError naming
+/// `argument` when it is not callable.
+inline std::function<void(const std::string&)> optionalMessageCallback(py::handle value,
+                                                                       const char* argument,
+                                                                       const char* context) {
+  if (value.is_none()) return {};
+  if (!PyCallable_Check(value.ptr())) {
+    throw py::type_error(std::string(argument) + " must be callable or None, not " +
+                         Py_TYPE(value.ptr())->tp_name);
+  }
+  return messageCallback(py::reinterpret_borrow<py::object>(value), context);
+}
+
 }  // namespace lcmtf::python

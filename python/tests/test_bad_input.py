@@ -87,6 +87,8 @@ CASES = {
     "listener authorities a str": (
         lambda buffer: lcmtf.TransformListener(buffer, "memq://", allowed_authorities="me"),
         TypeError, "allowed_authorities"),
+    "buffer reporter not callable": (
+        lambda buffer: lcmtf.Buffer(reporter="stderr"), TypeError, "reporter"),
     "listener reporter not callable": (
         lambda buffer: lcmtf.TransformListener(buffer, "memq://", reporter="stderr"), TypeError,
         "reporter"),

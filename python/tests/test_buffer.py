@@ -1,6 +1,7 @@
 """A buffer filled by hand answers lookups, introspection and velocity as in closed form."""
 
 import math
+import sys
 
 import numpy as np
 import pytest
@@ -102,6 +103,31 @@ def test_refused_samples_are_counted_not_stored():
     rejected = buffer.statistics().rejected
     assert sum(rejected.values()) == 2 and rejected["frame is its own parent"] == 1
     assert sorted(buffer.frames()) == ["a", "c"]
+
+
+def test_the_first_refusal_of_each_kind_goes_to_the_buffers_reporter():
+    reports = []
+    buffer = lcmtf.Buffer(reporter=reports.append)
+    assert buffer.set_transform(lcmtf.TransformStamped("a", "a", EPOCH), "test") is False
+    assert buffer.set_transform(lcmtf.TransformStamped("b", "b", EPOCH), "test") is False
+    far_from_unit = lcmtf.TransformStamped("a", "b", EPOCH, rotation=(0, 0, 0, 2))
+    assert buffer.set_transforms([far_from_unit, far_from_unit], "test") == 0
+    assert len(reports) == 2, reports
+    assert "'a'" in reports[0] and "own parent" in reports[0]
+    assert "quaternion of norm 2" in reports[1]
+
+
+def test_a_reporter_that_raises_does_not_undo_the_refusal(monkeypatch):
+    def broken(message):
+        raise RuntimeError("reporter broke")
+
+    unraisable = []
+    monkeypatch.setattr(sys, "unraisablehook", unraisable.append)
+    buffer = lcmtf.Buffer(reporter=broken)
+    assert buffer.set_transform(lcmtf.TransformStamped("a", "a", EPOCH), "test") is False
+    assert [str(u.exc_value) for u in unraisable] == ["reporter broke"]
+    assert buffer.set_transform(lcmtf.TransformStamped("a", "b", EPOCH), "test") is True
+    assert buffer.statistics().rejected["frame is its own parent"] == 1
 
 
 def test_velocity_of_the_turning_base():

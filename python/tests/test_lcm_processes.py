@@ -139,3 +139,18 @@ def test_listener_reports_a_refusal_to_a_python_callable(udpm_url):
         assert listener.statistics().unauthorized >= 1
     assert len(reports) == 1 and "'intruder'" in reports[0], reports
     assert not buffer.frame_exists("base")
+
+
+def test_a_transform_the_buffer_refuses_goes_to_the_buffers_reporter(udpm_url):
+    listener_reports, buffer_reports = [], []
+    buffer = lcmtf.Buffer(reporter=buffer_reports.append)
+    far_from_unit = lcmtf.TransformStamped("map", "base", time.time(), rotation=(0, 0, 0, 2))
+    with lcmtf.TransformListener(buffer, udpm_url, reporter=listener_reports.append), \
+            lcmtf.TransformBroadcaster(udpm_url) as broadcaster:
+        for _ in range(200):
+            broadcaster.send_transform(far_from_unit)
+            if buffer_reports:
+                break
+            time.sleep(0.01)
+    assert len(buffer_reports) == 1 and "quaternion of norm 2" in buffer_reports[0], buffer_reports
+    assert listener_reports == []
