@@ -1,8 +1,11 @@
 #include "lcmtf/nodes/static_transform_spec.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <utility>
+#include <vector>
 
 #include "lcmtf/frame_name.hpp"
 #include "lcmtf/programs/command_line.hpp"
@@ -34,6 +37,37 @@ Eigen::Quaterniond unitQuaternion(const Eigen::Vector4d& xyzw, const std::string
                            "; a rotation needs norm 1 (within 0.001)");
   }
   return Eigen::Quaterniond(xyzw.w(), xyzw.x(), xyzw.y(), xyzw.z()).normalized();
+}
+
+using ParentOf = std::map<std::string, std::pair<std::string, const StaticTransformSpec*>>;
+
+/// Refuses a chain of parents that comes back to where it began, naming every link of it.
+void refuseLoops(const ParentOf& parent_of) {
+  enum class Walk { kOnPath, kDone };
+  std::map<std::string, Walk> walked;
+  for (const auto& start : parent_of) {
+    std::vector<std::string> path;
+    std::string frame = start.first;
+    while (parent_of.count(frame) != 0 && walked.count(frame) == 0) {
+      walked[frame] = Walk::kOnPath;
+      path.push_back(frame);
+      frame = parent_of.at(frame).first;
+    }
+    const auto again = walked.find(frame);
+    if (again != walked.end() && again->second == Walk::kOnPath) {
+      const auto first = std::find(path.begin(), path.end(), frame);
+      std::string chain = "'" + frame + "'";
+      std::string origins;
+      for (auto link = path.end(); link != first;) {
+        --link;
+        chain += " -> '" + *link + "'";
+        origins += (origins.empty() ? "" : ", ") + parent_of.at(*link).second->origin;
+      }
+      throw CommandLineError("the transforms make a loop, " + chain + " (given at " + origins +
+                             "); frames must form a tree");
+    }
+    for (const std::string& done : path) walked[done] = Walk::kDone;
+  }
 }
 
 }  // namespace
@@ -68,16 +102,18 @@ TransformStamped toStaticTransform(const StaticTransformSpec& spec, TimePoint st
 std::vector<TransformStamped> toStaticTransforms(const std::vector<StaticTransformSpec>& specs,
                                                  TimePoint stamp) {
   std::vector<TransformStamped> transforms;
-  std::map<std::string, const StaticTransformSpec*> by_child;
+  ParentOf parent_of;
   for (const StaticTransformSpec& spec : specs) {
-    transforms.push_back(toStaticTransform(spec, stamp));
-    const auto [seen, inserted] = by_child.emplace(transforms.back().child_frame, &spec);
+    const TransformStamped& transform = transforms.emplace_back(toStaticTransform(spec, stamp));
+    const auto [seen, inserted] =
+        parent_of.try_emplace(transform.child_frame, transform.parent_frame, &spec);
     if (!inserted) {
       throw CommandLineError(spec.origin + ": frame '" + seen->first +
-                             "' already has a parent, given at " + seen->second->origin +
+                             "' already has a parent, given at " + seen->second.second->origin +
                              "; a frame has one parent");
     }
   }
+  refuseLoops(parent_of);
   return transforms;
 }
 

@@ -100,6 +100,18 @@ TEST(StaticTransformFile, EntriesAreCheckedLikeTheCommandLine) {
                         "mounts.yaml:1:3 (transform 1)"));
 }
 
+TEST(StaticTransformFile, ParentsThatLoopAreRefusedLinkByLink) {
+  EXPECT_THAT(refusal("- {frame_id: a, child_frame_id: b}\n- {frame_id: b, child_frame_id: a}\n"),
+              HasSubstr("loop, 'a' -> 'b' -> 'a' (given at mounts.yaml:1:3 (transform 1), "
+                        "mounts.yaml:2:3 (transform 2)); frames must form a tree"));
+  EXPECT_THAT(refusal("- {frame_id: map, child_frame_id: odom}\n"
+                      "- {frame_id: odom, child_frame_id: b}\n"
+                      "- {frame_id: d, child_frame_id: b2}\n"
+                      "- {frame_id: b2, child_frame_id: c}\n"
+                      "- {frame_id: c, child_frame_id: d}\n"),
+              HasSubstr("'b2' -> 'c' -> 'd' -> 'b2'"));
+}
+
 TEST(StaticTransformFile, FileThatCannotBeReadIsNamed) {
   const std::filesystem::path directory = lcmtf_test::makeTemporaryDirectory("transform-file");
   const std::string missing = (directory / "missing.yaml").string();
