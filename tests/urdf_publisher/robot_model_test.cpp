@@ -270,6 +270,16 @@ TEST(RobotModel, EmptyJointNameIsRefused) {
             "test.urdf: a joint has an empty name");
 }
 
+TEST(RobotModel, LinksThatAreTheSameFrameAreRefused) {
+  EXPECT_EQ(refusal("<robot name='r'><link name='/b'/><link name='b'/><joint name='j' "
+                    "type='fixed'><parent link='/b'/><child link='b'/></joint></robot>"),
+            "test.urdf: links '/b' and 'b' are the same frame 'b' (frame names drop one leading "
+            "'/')");
+  EXPECT_EQ(refusal("<robot name='r'><link name='/'/><link name='b'/><joint name='j' "
+                    "type='fixed'><parent link='/'/><child link='b'/></joint></robot>"),
+            "test.urdf: link '/' names no frame (frame names drop one leading '/')");
+}
+
 TEST(RobotModel, MimicOfAnUnknownJointIsRefused) {
   EXPECT_EQ(refusal(chainOfMimics("<mimic joint='nothing'/></joint>")),
             "test.urdf: joint 'j2' mimics 'nothing', which is not a joint of the robot");

@@ -5,10 +5,13 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <string_view>
 
+#include "lcmtf/frame_name.hpp"
 #include "lcmtf/programs/number_text.hpp"
-#include "mimic_chains.hpp"
 #include "lcmtf_urdf/urdfdom_parse.hpp"
+#include "mimic_chains.hpp"
 
 namespace lcmtf::urdf {
 
@@ -38,8 +41,16 @@ class ModelBuilder {
   }
 
   void checkNames() const {
+    std::map<std::string_view, const std::string*> link_of_frame;
     for (const auto& [name, link] : urdf_.links_) {
       if (name.empty()) fail("a link has an empty name");
+      const std::string_view frame = canonicalFrameName(name);
+      if (frame.empty()) fail("link '/' names no frame (frame names drop one leading '/')");
+      const auto [seen, added] = link_of_frame.emplace(frame, &name);
+      if (!added) {
+        fail("links '" + *seen->second + "' and '" + name + "' are the same frame '" +
+             std::string(frame) + "' (frame names drop one leading '/')");
+      }
     }
     for (const auto& [name, joint] : urdf_.joints_) {
       if (name.empty()) fail("a joint has an empty name");
