@@ -84,7 +84,7 @@ class EchoLoop {
       if (!heardAnything()) missing += " on " + channels();
       if (timed_out) {
         err_ << kProgram << ": gave up after " << toString(*options_.timeout) << ": " << missing
-             << std::endl;
+             << tooShortForTheTimeBeforeNow() << std::endl;
         return kExitFailure;
       }
       if (!last_waiting || now_steady - *last_waiting >= waiting_period) {
@@ -108,6 +108,12 @@ class EchoLoop {
       *err << kProgram << ": " << message << std::endl;
     };
     return listener;
+  }
+
+  std::string tooShortForTheTimeBeforeNow() const {
+    if (!options_.timeout || *options_.timeout > options_.time.before_now) return {};
+    return " (history begins when lcmtf-echo starts listening: a moving frame's pose " +
+           toString(options_.time.before_now) + " ago needs a --timeout longer than that)";
   }
 
   std::string channels() const {
@@ -243,12 +249,17 @@ std::optional<int> parseEchoCommandLine(const std::vector<std::string>& args, Ec
       ->check(CLI::Range(0, 15))
       ->type_name("DIGITS")
       ->capture_default_str();
-  auto* timeout = app->add_option("--timeout", timeout_seconds,
-                                  "Exit with status 1 if no pose could be printed within this "
-                                  "time (default: " +
-                                      toString(kOnceTimeout) + " with --once, else keep waiting)")
-                      ->check(positiveFiniteNumber())
-                      ->type_name("SECONDS");
+  auto* timeout =
+      app->add_option(
+             "--timeout", timeout_seconds,
+             "Exit with status 1 if no pose could be printed within this "
+             "time (default with --once: " +
+                 std::to_string(
+                     std::chrono::duration_cast<std::chrono::seconds>(kOnceTimeout).count()) +
+                 " s more than the seconds before now of a negative --time; "
+                 "else keep waiting)")
+          ->check(positiveFiniteNumber())
+          ->type_name("SECONDS");
   addConnectionOptions(*app, options.connection);
   if (auto status = parseCommandLine(*app, args, out, err)) return status;
   try {
@@ -259,7 +270,8 @@ std::optional<int> parseEchoCommandLine(const std::vector<std::string>& args, Ec
   if (timeout->count() > 0) {
     options.timeout = secondsToDuration(timeout_seconds);
   } else if (options.once) {
-    options.timeout = kOnceTimeout;
+    // History begins when the listening does: a moving frame's pose N s ago needs N s of it.
+    options.timeout = kOnceTimeout + options.time.before_now;
   }
   return std::nullopt;
 }

@@ -76,6 +76,13 @@ TEST(EchoCommandLine, OnceGivesUpAfterFiveSecondsUnlessToldOtherwise) {
   EXPECT_EQ(parse({"map", "base"}).options.timeout, std::nullopt);
 }
 
+TEST(EchoCommandLine, OnceBeforeNowWaitsForThatMuchHistoryMore) {
+  EXPECT_EQ(parse({"map", "base", "--once", "--time", "-20"}).options.timeout,
+            std::optional<Duration>(std::chrono::seconds(25)));
+  EXPECT_EQ(parse({"map", "base", "--once", "--time", "-20", "--timeout", "3"}).options.timeout,
+            std::optional<Duration>(std::chrono::seconds(3)));
+}
+
 TEST(EchoCommandLine, BadArgumentsAreNamed) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
       {{"map"}, "FRAME is required"},
@@ -280,6 +287,35 @@ TEST(Echo, OnceAtAnInstantOlderThanAnyHistoryFailsAtOnce) {
   EXPECT_THAT(err.str(), HasSubstr("can never be looked up: it is older than the 10.000000 s of "
                                    "history kept"));
   EXPECT_EQ(out.str(), "");
+}
+
+TEST(Echo, OnceBeforeNowWaitsUntilItsHistoryReachesThatFarBack) {
+  const std::string url =
+      lcmtf_test::privateUdpmUrl("Echo.OnceBeforeNowWaitsUntilItsHistoryReachesThatFarBack");
+  MovingBase base(url);
+  std::ostringstream out, err;
+  const std::atomic<bool> stop{false};
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(
+      echoCommand({"--lcm-url", url, "--once", "--time", "-0.5", "odom", "base"}, out, err, stop),
+      kExitSuccess)
+      << err.str();
+  EXPECT_GE(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(400));
+  EXPECT_THAT(out.str(), HasSubstr("'base' in 'odom'"));
+}
+
+TEST(Echo, ATimeoutShorterThanTheTimeBeforeNowIsSaidToBe) {
+  const std::string url =
+      lcmtf_test::privateUdpmUrl("Echo.ATimeoutShorterThanTheTimeBeforeNowIsSaidToBe");
+  MovingBase base(url);
+  std::ostringstream out, err;
+  const std::atomic<bool> stop{false};
+  EXPECT_EQ(
+      echoCommand({"--lcm-url", url, "--once", "--time", "-20", "--timeout", "0.3", "odom", "base"},
+                  out, err, stop),
+      kExitFailure);
+  EXPECT_THAT(err.str(), HasSubstr("history begins when lcmtf-echo starts listening: a moving "
+                                   "frame's pose 20.000000 s ago needs a --timeout longer"));
 }
 
 TEST(Echo, WarnsOnceWhenTheLatestDataStopsChanging) {
