@@ -39,7 +39,12 @@ std::string text(StrArg value, const char* argument) {
   Py_ssize_t size = 0;
   const char* utf8 = PyUnicode_AsUTF8AndSize(value.value.ptr(), &size);
   if (utf8 == nullptr) throw py::error_already_set();
-  return std::string(utf8, static_cast<std::size_t>(size));
+  std::string result(utf8, static_cast<std::size_t>(size));
+  // LCM carries and C reads names only up to their first NUL: it would cut such a name short.
+  if (result.find('\0') != std::string::npos) {
+    throw py::value_error(std::string(argument) + " must not contain a NUL character ('\\x00')");
+  }
+  return result;
 }
 
 std::string textOr(OptionalStrArg value, const char* argument, const std::string& fallback) {

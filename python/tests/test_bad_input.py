@@ -26,6 +26,10 @@ def on_buffer(method, *arguments, **options):
 CASES = {
     "parent frame an int": (stamped(parent_frame=1), TypeError, "parent_frame"),
     "child frame bytes": (stamped(child_frame=b"base"), TypeError, "child_frame"),
+    "parent frame with a NUL": (stamped(parent_frame="map\0x"), ValueError, "parent_frame"),
+    "lookup frame with a NUL": (
+        on_buffer("lookup_transform", "map", "base\0", 0.0), ValueError, "source"),
+    "authority with a NUL": (on_buffer("set_transform", GOOD, "me\0"), ValueError, "authority"),
     "stamp a str": (stamped(stamp="now"), TypeError, "stamp"),
     "stamp NaN": (stamped(stamp=math.nan), ValueError, "stamp"),
     "stamp before 1970": (stamped(stamp=-1.0), ValueError, "stamp"),
