@@ -36,6 +36,31 @@ py::array_t<double> matrix(const Transform& transform) {
   return readOnlyArray(result.data(), 4, 4);
 }
 
+bool sameFields(const TransformStamped& a, const TransformStamped& b) {
+  return a.stamp == b.stamp && a.parent_frame == b.parent_frame && a.child_frame == b.child_frame &&
+         a.transform.translation == b.transform.translation &&
+         a.transform.rotation.coeffs() == b.transform.rotation.coeffs();
+}
+
+// The stamp as its integer microseconds, so that a round trip keeps it exactly.
+py::tuple pickledState(const TransformStamped& t) {
+  const Eigen::Vector3d& xyz = t.transform.translation;
+  const Eigen::Vector4d xyzw = t.transform.rotation.coeffs();
+  return py::make_tuple(t.parent_frame, t.child_frame, toUtime(t.stamp),
+                        py::make_tuple(xyz.x(), xyz.y(), xyz.z()),
+                        py::make_tuple(xyzw.x(), xyzw.y(), xyzw.z(), xyzw.w()));
+}
+
+TransformStamped unpickled(const py::tuple& state) {
+  if (state.size() != 5) throw py::value_error("not a pickled lcmtf.TransformStamped");
+  const auto utime = state[2].cast<std::int64_t>();
+  if (utime < 0) throw py::value_error("stamp must not be before 1970");
+  const Eigen::VectorXd xyz = finiteVector(state[3], 3, "translation");
+  return TransformStamped{fromUtime(utime), text(StrArg{state[0]}, "parent_frame"),
+                          text(StrArg{state[1]}, "child_frame"),
+                          Transform(Eigen::Vector3d(xyz), quaternion(state[4], "rotation"))};
+}
+
 void bindVelocity(py::module_& module) {
   py::class_<Velocity>(module, "Velocity",
                        "Linear (m/s) and angular (rad/s) velocity of one frame relative to "
@@ -111,6 +136,17 @@ void bindTransformStamped(py::module_& module) {
           "matrix", [](const TransformStamped& t) { return matrix(t.transform); },
           "The 4x4 homogeneous matrix [R t; 0 1] that maps points in child_frame into "
           "parent_frame.")
+      .def(
+          "__eq__",
+          [](const TransformStamped& t, py::handle other) -> py::object {
+            if (!py::isinstance<TransformStamped>(other))
+              return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            return py::bool_(sameFields(t, other.cast<const TransformStamped&>()));
+          },
+          py::is_operator(), py::arg("other"),
+          "Equal when frames, stamp, translation and quaternion are all exactly equal (q and -q "
+          "differ).")
+      .def(py::pickle(&pickledState, &unpickled))
       .def("__repr__", &repr);
   bindVelocity(module);
 }

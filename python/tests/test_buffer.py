@@ -1,6 +1,8 @@
 """A buffer filled by hand answers lookups, introspection and velocity as in closed form."""
 
+import copy
 import math
+import pickle
 import sys
 
 import numpy as np
@@ -63,6 +65,23 @@ def test_transform_stamped_holds_what_it_was_given():
     assert t.translation.tolist() == [4, 5, 6] and t.child_frame == "c"
     np.testing.assert_allclose(t.matrix(), pose_matrix([4, 5, 6], [0, 0, 0.6, 0.8]), atol=1e-15)
     assert "child_frame='c'" in repr(t)
+
+
+def test_transform_stamped_compares_copies_and_pickles_by_value():
+    original = lcmtf.TransformStamped("map", "base", EPOCH + 0.123456, [1, 2, 3],
+                                      [0, 0, math.sin(0.1), math.cos(0.1)])
+    for copied in (pickle.loads(pickle.dumps(original)), copy.copy(original),
+                   copy.deepcopy(original)):
+        assert copied == original and copied is not original
+        assert copied.stamp == original.stamp
+    moved = copy.copy(original)
+    moved.translation = [1, 2, 3.5]
+    assert moved != original
+    assert original != lcmtf.TransformStamped("map", "base", EPOCH + 0.123457, [1, 2, 3],
+                                              original.rotation)
+    assert original != "map -> base"
+    with pytest.raises(TypeError):
+        hash(original)
 
 
 def test_times_convert_to_and_from_lcm_microseconds():

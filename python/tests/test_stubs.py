@@ -12,7 +12,7 @@ import lcmtf
 
 STUB = ast.parse((pathlib.Path(lcmtf.__file__).parent / "__init__.pyi").read_text())
 STUB_CLASSES = {node.name: node for node in STUB.body if isinstance(node, ast.ClassDef)}
-DECLARED_DUNDERS = {"__init__", "__len__", "__enter__", "__exit__"}
+DECLARED_DUNDERS = {"__init__", "__len__", "__enter__", "__exit__", "__eq__"}
 SLOT = type(object.__init__)  # what pybind11 leaves as __init__ in a class Python cannot make
 
 
