@@ -43,5 +43,20 @@ TEST(DotQuoted, NamesFromTheNetworkAreQuotedSoTheyCannotBreakAGraph) {
   EXPECT_EQ(dotQuoted("\xe2\x82x \xc0\xaf \xed\xa0\x80"), "\"??x ?? ???\"");
 }
 
+TEST(YamlQuoted, NamesYamlCanShowAreSingleQuoted) {
+  EXPECT_EQ(yamlQuoted("base_link"), "'base_link'");
+  EXPECT_EQ(yamlQuoted("it's \"here\" \\"), "'it''s \"here\" \\'");
+  EXPECT_EQ(yamlQuoted("caf\xc3\xa9 \xf0\x9f\xa4\x96"), "'caf\xc3\xa9 \xf0\x9f\xa4\x96'");
+  EXPECT_EQ(yamlQuoted(""), "''");
+}
+
+TEST(YamlQuoted, LineBreaksAndControlCharactersAreEscapedInDoubleQuotes) {
+  EXPECT_EQ(yamlQuoted("a\nb\tc"), "\"a\\nb\\tc\"");
+  EXPECT_EQ(yamlQuoted("it's \"x\" \\\x1b"), "\"it's \\\"x\\\" \\\\\\x1B\"");
+  EXPECT_EQ(yamlQuoted(std::string("nul\0", 4)), "\"nul\\x00\"");
+  EXPECT_EQ(yamlQuoted("nel\xc2\x85 ls\xe2\x80\xa8"), "\"nel\\x85 ls\\u2028\"");
+  EXPECT_EQ(yamlQuoted("bad\xff caf\xc3\xa9"), "\"bad\\xFF caf\xc3\xa9\"");
+}
+
 }  // namespace
 }  // namespace lcmtf

@@ -34,15 +34,6 @@ std::vector<EdgeDescription> describeEdgesOf(const FrameTable& frames,
   return edges;
 }
 
-std::string yamlQuoted(std::string_view text) {
-  std::string quoted = "'";
-  for (char c : text) {
-    if (c == '\'') quoted += '\'';
-    quoted += c;
-  }
-  return quoted + "'";
-}
-
 std::string fixed(double value, int digits) {
   char text[64];
   std::snprintf(text, sizeof text, "%.*f", digits, value);

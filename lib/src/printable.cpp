@@ -32,7 +32,78 @@ std::size_t utf8SequenceLength(std::string_view text, std::size_t at) {
   return length;
 }
 
+char32_t codePoint(std::string_view sequence) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(sequence[i]); };
+  static constexpr unsigned char kLeadBits[] = {0, 0x7f, 0x1f, 0x0f, 0x07};
+  char32_t value = byte(0) & kLeadBits[sequence.size()];
+  for (std::size_t i = 1; i < sequence.size(); ++i) value = (value << 6) | (byte(i) & 0x3f);
+  return value;
+}
+
+// YAML's printable set, less the characters some readers take for line breaks or a byte
+// order mark.
+bool yamlShowsAsIs(char32_t c) {
+  if (c == 0x85 || c == 0x2028 || c == 0x2029 || c == 0xfeff) return false;
+  return (c >= 0x20 && c <= 0x7e) || (c >= 0xa0 && c <= 0xd7ff) || (c >= 0xe000 && c <= 0xfffd) ||
+         c >= 0x10000;
+}
+
+void appendYamlEscape(std::string& out, char32_t c) {
+  switch (c) {
+    case '\n':
+      out += "\\n";
+      return;
+    case '\t':
+      out += "\\t";
+      return;
+    case '"':
+      out += "\\\"";
+      return;
+    case '\\':
+      out += "\\\\";
+      return;
+    default:
+      break;
+  }
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  const int digits = c <= 0xff ? 2 : c <= 0xffff ? 4 : 8;
+  out += digits == 2 ? "\\x" : digits == 4 ? "\\u" : "\\U";
+  for (int shift = 4 * (digits - 1); shift >= 0; shift -= 4) out += kHex[(c >> shift) & 0xf];
+}
+
 }  // namespace
+
+std::string yamlQuoted(std::string_view text) {
+  std::string single = "'";
+  std::string double_quoted = "\"";
+  bool needs_escapes = false;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t length =
+        static_cast<unsigned char>(text[at]) < 0x80 ? 1 : utf8SequenceLength(text, at);
+    if (length == 0) {  // a malformed byte: shown by its value, as Latin-1 would read it
+      appendYamlEscape(double_quoted, static_cast<unsigned char>(text[at]));
+      needs_escapes = true;
+      ++at;
+      continue;
+    }
+    const std::string_view sequence = text.substr(at, length);
+    const char32_t c = codePoint(sequence);
+    if (yamlShowsAsIs(c)) {
+      if (c == '\'') single += '\'';
+      single += sequence;
+      if (c == '"' || c == '\\') {
+        appendYamlEscape(double_quoted, c);
+      } else {
+        double_quoted += sequence;
+      }
+    } else {
+      appendYamlEscape(double_quoted, c);
+      needs_escapes = true;
+    }
+    at += length;
+  }
+  return needs_escapes ? double_quoted + "\"" : single + "'";
+}
 
 std::string printable(std::string_view text) {
   static constexpr char kHex[] = "0123456789abcdef";

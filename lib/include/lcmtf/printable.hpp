@@ -13,5 +13,9 @@ std::string printableLines(std::string_view text);
 /// `text` as a quoted Graphviz DOT string shown as it is: a newline becomes a line break, and
 /// control characters and malformed UTF-8 (Graphviz's renderers fail on it) become '?'.
 std::string dotQuoted(std::string_view text);
+/// `text` as a YAML scalar that reads back as the same name: single-quoted, or double-quoted
+/// with escapes when it holds line breaks, control characters or other characters YAML cannot
+/// show (a malformed UTF-8 byte becomes \xNN, the one thing that cannot read back the same).
+std::string yamlQuoted(std::string_view text);
 
 }  // namespace lcmtf
