@@ -43,6 +43,10 @@ std::string edgeLabel(const EdgeTraffic& edge, TimePoint heard_until) {
   return label;
 }
 
+// dotQuoted alone shows every unshowable byte as '?', which would merge frames that differ
+// only there; printable's escapes keep every name's node its own.
+std::string nodeId(const std::string& frame) { return dotQuoted(printable(frame)); }
+
 }  // namespace
 
 std::string framesToDot(const TrafficSummary& summary, const std::string& caption) {
@@ -61,11 +65,11 @@ std::string framesToDot(const TrafficSummary& summary, const std::string& captio
       << "  node [shape=box, style=rounded, fontsize=12];\n"
       << "  edge [fontsize=9];\n";
   for (const std::string& frame : frames) {
-    dot << "  " << dotQuoted(frame) << " [label=" << dotQuoted(frame)
+    dot << "  " << nodeId(frame) << " [label=" << dotQuoted(frame)
         << (conflicted.count(frame) ? ", color=red, fontcolor=red" : "") << "];\n";
   }
   for (const EdgeTraffic& edge : summary.edges) {
-    dot << "  " << dotQuoted(edge.parent) << " -> " << dotQuoted(edge.child)
+    dot << "  " << nodeId(edge.parent) << " -> " << nodeId(edge.child)
         << " [label=" << dotQuoted(edgeLabel(edge, summary.window_end));
     if (edge.is_static) dot << ", style=dashed";
     if (conflicted.count(edge.child)) dot << ", color=red, fontcolor=red";

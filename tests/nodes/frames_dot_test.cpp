@@ -91,6 +91,17 @@ TEST(FramesDot, AFrameFromTwoBroadcastersIsRed) {
   EXPECT_THAT(dot, Not(HasSubstr("\"map\" [label=\"map\", color=red")));
 }
 
+TEST(FramesDot, FramesThatDifferOnlyInUnshowableBytesStayApart) {
+  const std::string dot = framesToDot(
+      summaryOf({dynamicEdge("base", "cam?", {"a"}), dynamicEdge("base", "cam\x01", {"b"}),
+                 dynamicEdge("base", "cam\xff", {"c"})}),
+      "");
+  EXPECT_THAT(dot, HasSubstr("  \"cam?\" [label=\"cam?\"];\n"));
+  EXPECT_THAT(dot, HasSubstr("  \"cam\\\\x01\" [label=\"cam?\"];\n"));
+  EXPECT_THAT(dot, HasSubstr("  \"cam\\\\xff\" [label=\"cam?\"];\n"));
+  EXPECT_THAT(dot, HasSubstr("  \"base\" -> \"cam\\\\x01\" [label=\"broadcaster: b\\n"));
+}
+
 TEST(FramesDot, GraphvizDrawsHostileNamesWhenInstalled) {
   const std::optional<std::string> dot = findOnPath("dot");
   if (!dot) GTEST_SKIP() << "Graphviz's dot is not installed";
