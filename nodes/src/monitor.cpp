@@ -99,7 +99,7 @@ class MonitorLoop {
     const std::optional<ChainReport> chain =
         chain_ ? std::optional<ChainReport>(chain_->report()) : std::nullopt;
     if (options_.continuous && options_.clear_screen) out << kClearScreen;
-    out << printableLines(formatMonitorReport(summary, source(), chain ? &*chain : nullptr));
+    out << formatMonitorReport(summary, source(), chain ? &*chain : nullptr);
     if (options_.continuous && !options_.clear_screen) out << "----\n";
     out << std::flush;
     heard_anything_ = heard_anything_ || summary.messages > 0 || summary.malformed > 0;

@@ -3,15 +3,50 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "lcmtf/nodes/pose_text.hpp"
 #include "lcmtf/nodes/text_table.hpp"
+#include "lcmtf/printable.hpp"
 
 namespace lcmtf::nodes {
 
 namespace {
+
+// Every name and description from the network escaped before the tables measure their
+// columns: escaping after would misalign them, and a newline kept would forge rows.
+void escapeAll(std::string& text) { text = printable(text); }
+void escapeAll(std::vector<std::string>& texts) {
+  for (std::string& text : texts) escapeAll(text);
+}
+
+TrafficSummary shownSafely(TrafficSummary summary) {
+  for (EdgeTraffic& edge : summary.edges) {
+    escapeAll(edge.parent);
+    escapeAll(edge.child);
+    escapeAll(edge.authorities);
+  }
+  for (AuthorityTraffic& authority : summary.authorities) {
+    escapeAll(authority.authority);
+    escapeAll(authority.frames);
+  }
+  for (FrameConflict& conflict : summary.conflicts) {
+    escapeAll(conflict.child);
+    escapeAll(conflict.senders);
+  }
+  escapeAll(summary.problems);
+  return summary;
+}
+
+ChainReport shownSafely(ChainReport chain) {
+  escapeAll(chain.frame_a);
+  escapeAll(chain.frame_b);
+  escapeAll(chain.frames);
+  escapeAll(chain.problem);
+  return chain;
+}
 
 std::string rate(double hz) { return hz > 0.0 ? fixedDecimals(hz, 2) : "-"; }
 std::string milliseconds(double seconds) { return fixedDecimals(seconds * 1e3, 3); }
@@ -127,14 +162,19 @@ void writeSequenceTrouble(std::ostream& out, const TrafficSummary& summary) {
 
 }  // namespace
 
-std::string formatMonitorReport(const TrafficSummary& summary, const std::string& source,
-                                const ChainReport* chain) {
+std::string formatMonitorReport(const TrafficSummary& received, const std::string& source,
+                                const ChainReport* received_chain) {
+  const TrafficSummary summary = shownSafely(received);
+  const std::optional<ChainReport> safe_chain =
+      received_chain ? std::optional<ChainReport>(shownSafely(*received_chain)) : std::nullopt;
+  const ChainReport* chain = safe_chain ? &*safe_chain : nullptr;
   std::ostringstream out;
   const double seconds = toSeconds(summary.window_end - summary.window_start);
   out << "Heard " << summary.edges.size() << " edge" << (summary.edges.size() == 1 ? "" : "s")
       << " from " << summary.authorities.size() << " authorit"
-      << (summary.authorities.size() == 1 ? "y" : "ies") << " on " << source << " in the "
-      << fixedDecimals(seconds, 3) << " s up to " << toString(summary.window_end) << ".\n\n";
+      << (summary.authorities.size() == 1 ? "y" : "ies") << " on " << printable(source)
+      << " in the " << fixedDecimals(seconds, 3) << " s up to " << toString(summary.window_end)
+      << ".\n\n";
   if (chain) writeChain(out, *chain);
   if (summary.edges.empty()) {
     out << "No transforms heard in this window.\n";

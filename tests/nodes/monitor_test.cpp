@@ -65,6 +65,23 @@ TEST(MonitorReport, FramesAreListedAsATreeWithRatesDelaysAndBuffers) {
                 "      camera  base    mounts           -        static        -         1\n"));
 }
 
+TEST(MonitorReport, HostileNamesAreEscapedAndTheColumnsStillLineUp) {
+  TfTraffic traffic;
+  send(traffic, "evil\x1b[2J",
+       {wireTransform("odom", "base\nfake row", kStart), wireTransform("odom", "arm", kStart)},
+       true, kStart);
+  const std::string report = formatMonitorReport(
+      traffic.summarize(kStart, kStart + std::chrono::seconds(1), std::chrono::seconds(10)), "TF",
+      nullptr);
+  EXPECT_THAT(
+      report,
+      HasSubstr(
+          "  frame             parent  authority    rate Hz  delay avg ms  max ms  buffered\n"
+          "  arm               odom    evil\\x1b[2J        -        static       -         1\n"
+          "  base\\x0afake row  odom    evil\\x1b[2J        -        static       -         1\n"));
+  EXPECT_THAT(report, Not(HasSubstr("\x1b")));
+}
+
 TEST(MonitorReport, AuthoritiesConflictsAndProblemsAreListed) {
   const std::string report = formatMonitorReport(robotSummary(), "TF", nullptr);
   EXPECT_THAT(report,
