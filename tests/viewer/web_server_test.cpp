@@ -167,18 +167,30 @@ TEST_F(WebServerTest, RefusesTraversalUnknownPathsAndOtherMethods) {
     EXPECT_EQ(answer.find("root:"), std::string::npos);
   }
   EXPECT_EQ(get("/etc/passwd").rfind("HTTP/1.1 404 Not Found\r\n", 0), 0u);
-  const std::string post =
-      raw("POST / HTTP/1.1\r\nHost: localhost\r\nContent-Length: 3\r\nConnection: close\r\n\r\nabc");
+  const std::string post = raw(
+      "POST / HTTP/1.1\r\nHost: localhost\r\nContent-Length: 3\r\nConnection: close\r\n\r\nabc");
   EXPECT_EQ(post.rfind("HTTP/1.1 405 Method Not Allowed\r\n", 0), 0u) << post;
   EXPECT_NE(post.find("Allow: GET, HEAD\r\n"), std::string::npos);
-  EXPECT_EQ(raw("GARBAGE\r\n\r\n"), "");  // not HTTP: closed unanswered
   EXPECT_GE(server_->statistics().requests_refused.load(), 8u);
 }
 
+TEST_F(WebServerTest, AnswersWhatIsNotHttpWith400AndAnOversizedHeaderWith431) {
+  const std::string garbage = raw("GARBAGE\r\n\r\n");
+  EXPECT_EQ(garbage.rfind("HTTP/1.1 400 Bad Request\r\n", 0), 0u) << garbage;
+  EXPECT_NE(garbage.find("not an HTTP request: "), std::string::npos) << garbage;
+  const std::string bad_version = raw("GET / HTTP/9\r\nHost: localhost\r\n\r\n");
+  EXPECT_EQ(bad_version.rfind("HTTP/1.1 400 Bad Request\r\n", 0), 0u) << bad_version;
+  const std::string huge =
+      raw("GET / HTTP/1.1\r\nHost: localhost\r\nX-Filler: " + std::string(9000, 'x') + "\r\n\r\n");
+  EXPECT_EQ(huge.rfind("HTTP/1.1 431 Request Header Fields Too Large\r\n", 0), 0u) << huge;
+  EXPECT_EQ(get("/").rfind("HTTP/1.1 200 OK\r\n", 0), 0u);
+  EXPECT_EQ(server_->statistics().requests_refused.load(), 3u);
+}
+
 TEST_F(WebServerTest, KeepsAConnectionAliveForSeveralRequests) {
-  const std::string answer =
-      raw("GET / HTTP/1.1\r\nHost: localhost\r\n\r\nGET /nothing HTTP/1.1\r\nHost: localhost\r\n\r\n"
-          "GET / HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n");
+  const std::string answer = raw(
+      "GET / HTTP/1.1\r\nHost: localhost\r\n\r\nGET /nothing HTTP/1.1\r\nHost: localhost\r\n\r\n"
+      "GET / HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n");
   EXPECT_EQ(std::count(answer.begin(), answer.end(), '\n') > 10, true);
   std::size_t oks = 0;
   for (std::size_t at = answer.find("200 OK"); at != std::string::npos;

@@ -1,3 +1,4 @@
+#include <string>
 #include <utility>
 
 #include "web_connections.hpp"
@@ -7,6 +8,7 @@ namespace lcmtf::viewer::web {
 namespace {
 
 constexpr std::size_t kMaxRequestHeaderBytes = 8 * 1024;
+constexpr unsigned kAnswerVersion = 11;  // to a request whose own version could not be read
 
 std::string_view headerValue(const http::request<http::empty_body>& request, http::field field) {
   const auto value = request[field];
@@ -37,11 +39,18 @@ void HttpConnection::onRequestHeader(beast::error_code error) {
     stream_.socket().shutdown(tcp::socket::shutdown_send, error);
     return;
   }
-  if (error) {
-    // Malformed or oversized headers, or a timeout: nothing to answer reliably.
-    if (error != beast::error::timeout) ++state_.statistics.requests_refused;
+  if (error == http::error::header_limit) {
+    refuse(http::status::request_header_fields_too_large,
+           "the request's header is over " + std::to_string(kMaxRequestHeaderBytes) + " bytes",
+           kAnswerVersion, false);
     return;
   }
+  if (error.category() == beast::error_code(http::error::bad_method).category()) {
+    refuse(http::status::bad_request, "not an HTTP request: " + error.message(), kAnswerVersion,
+           false);
+    return;
+  }
+  if (error) return;  // a timeout, or the connection failed: no one to answer
   const http::request<http::empty_body>& request = parser_->get();
   if (request.method() != http::verb::get && request.method() != http::verb::head) {
     refuse(http::status::method_not_allowed, "only GET and HEAD are served", request.version(),
