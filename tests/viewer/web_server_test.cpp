@@ -15,6 +15,7 @@
 #include <future>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 namespace lcmtf::viewer {
 namespace {
@@ -185,6 +186,36 @@ TEST_F(WebServerTest, AnswersWhatIsNotHttpWith400AndAnOversizedHeaderWith431) {
   EXPECT_EQ(huge.rfind("HTTP/1.1 431 Request Header Fields Too Large\r\n", 0), 0u) << huge;
   EXPECT_EQ(get("/").rfind("HTTP/1.1 200 OK\r\n", 0), 0u);
   EXPECT_EQ(server_->statistics().requests_refused.load(), 3u);
+}
+
+TEST_F(WebServerTest, IdleConnectionsCannotLockThePageOut) {
+  server_.reset();
+  WebServerOptions options;
+  options.port = 0;
+  options.max_connections = 3;
+  server_ = std::make_unique<WebServer>(options, *handler_);
+  server_->start();
+  asio::io_context io;
+  std::vector<tcp::socket> idle;
+  for (int i = 0; i < 3; ++i) {
+    idle.emplace_back(io).connect(
+        tcp::endpoint(asio::ip::make_address("127.0.0.1"), server_->port()));
+    asio::write(idle.back(), asio::buffer(std::string("GET / HT")));  // and never the rest
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  const std::string answer = get("/");
+  EXPECT_EQ(answer.rfind("HTTP/1.1 200 OK\r\n", 0), 0u) << answer;
+  EXPECT_EQ(server_->statistics().idle_connections_closed.load(), 1u);
+  EXPECT_EQ(server_->statistics().connections_refused.load(), 0u);
+  char byte;
+  boost::system::error_code error;
+  idle[0].read_some(asio::buffer(&byte, 1), error);
+  EXPECT_EQ(error, asio::error::eof) << "the connection waiting longest is closed";
+  for (int i = 1; i < 3; ++i) {
+    idle[i].non_blocking(true);
+    idle[i].read_some(asio::buffer(&byte, 1), error);
+    EXPECT_EQ(error, asio::error::would_block) << "connection " << i << " is still open";
+  }
 }
 
 TEST_F(WebServerTest, KeepsAConnectionAliveForSeveralRequests) {

@@ -22,9 +22,32 @@ HttpConnection::HttpConnection(tcp::socket socket, ServerState& state)
   ++state_.open_connections;
 }
 
-HttpConnection::~HttpConnection() { --state_.open_connections; }
+HttpConnection::~HttpConnection() {
+  stopWaiting();
+  if (closed_idle_) --state_.closed_idle;
+  --state_.open_connections;
+}
+
+void HttpConnection::startWaiting() {
+  if (!waiting_at_) waiting_at_ = state_.waiting.insert(state_.waiting.end(), this);
+}
+
+void HttpConnection::stopWaiting() {
+  if (!waiting_at_) return;
+  state_.waiting.erase(*waiting_at_);
+  waiting_at_.reset();
+}
+
+void HttpConnection::closeIdle() {
+  stopWaiting();
+  closed_idle_ = true;
+  ++state_.closed_idle;
+  beast::error_code ignored;
+  stream_.socket().close(ignored);
+}
 
 void HttpConnection::readRequest() {
+  startWaiting();
   parser_.emplace();
   parser_->header_limit(kMaxRequestHeaderBytes);
   stream_.expires_after(state_.options.idle_timeout);
@@ -35,6 +58,7 @@ void HttpConnection::readRequest() {
 }
 
 void HttpConnection::onRequestHeader(beast::error_code error) {
+  stopWaiting();
   if (error == http::error::end_of_stream) {
     stream_.socket().shutdown(tcp::socket::shutdown_send, error);
     return;

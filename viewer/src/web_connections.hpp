@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <deque>
+#include <list>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,6 +21,8 @@
 #include "lcmtf_viewer/web_server.hpp"
 
 namespace lcmtf::viewer::web {
+
+class HttpConnection;
 
 namespace beast = boost::beast;
 namespace http = beast::http;
@@ -39,6 +42,10 @@ struct ServerState {
   WebServerStatistics statistics;
   std::size_t open_connections = 0;
   std::size_t open_pages = 0;
+  /// Connections waiting for a request, the one waiting longest first: when all are taken,
+  /// it makes room for a new one, so that idle connections cannot lock the page out.
+  std::list<HttpConnection*> waiting;
+  std::size_t closed_idle = 0;  ///< of open_connections: closed to make room, not yet gone
 };
 
 /// One HTTP connection: GET and HEAD of listed files, or an upgrade to a page's WebSocket.
@@ -47,8 +54,12 @@ class HttpConnection : public std::enable_shared_from_this<HttpConnection> {
   HttpConnection(tcp::socket socket, ServerState& state);
   ~HttpConnection();
   void start() { readRequest(); }
+  /// Closes it while it waits for a request, to make room for a new connection.
+  void closeIdle();
 
  private:
+  void startWaiting();
+  void stopWaiting();
   void readRequest();
   void onRequestHeader(beast::error_code error);
   void answer(const http::request<http::empty_body>& request);
@@ -62,6 +73,8 @@ class HttpConnection : public std::enable_shared_from_this<HttpConnection> {
   beast::flat_buffer buffer_;
   std::optional<http::request_parser<http::empty_body>> parser_;
   ServerState& state_;
+  std::optional<std::list<HttpConnection*>::iterator> waiting_at_;
+  bool closed_idle_ = false;
 };
 
 /// One open page's WebSocket: reads whole messages, writes queued ones one at a time.

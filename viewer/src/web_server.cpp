@@ -17,7 +17,7 @@ using web::tcp;
 class WebServer::Impl {
  public:
   Impl(const WebServerOptions& options, WebHandler& handler)
-      : io_(1), acceptor_(io_), state_(handler, options) {
+      : state_(handler, options), io_(1), acceptor_(io_) {
     boost::system::error_code error;
     const auto address = boost::asio::ip::make_address(options.bind_address, error);
     if (error) {
@@ -71,11 +71,23 @@ class WebServer::Impl {
     std::function<void()> task;
   };
 
+  // Closes the connection waiting longest for a request when every one is taken.
+  bool roomForAnother() {
+    const auto full = [this] {
+      return state_.open_connections - state_.closed_idle >= state_.options.max_connections;
+    };
+    if (full() && !state_.waiting.empty()) {
+      state_.waiting.front()->closeIdle();
+      ++state_.statistics.idle_connections_closed;
+    }
+    return !full();
+  }
+
   void accept() {
     acceptor_.async_accept(io_, [this](boost::system::error_code error, tcp::socket socket) {
       if (error == boost::asio::error::operation_aborted) return;
       if (!error) {
-        if (state_.open_connections >= state_.options.max_connections) {
+        if (!roomForAnother()) {
           ++state_.statistics.connections_refused;
         } else {
           // Small messages (a scene after a page's ack) go out at once, not after the page's
@@ -98,9 +110,10 @@ class WebServer::Impl {
     });
   }
 
+  // Outlives io_, whose end destroys the connections still waiting, which touch it.
+  web::ServerState state_;
   boost::asio::io_context io_;
   tcp::acceptor acceptor_;
-  web::ServerState state_;
   std::deque<Periodic> periodic_;  // timers must not move once waiting
   std::thread thread_;
 };

@@ -40,8 +40,10 @@ class WebHandler {
 /// Where the server listens and what it allows.
 struct WebServerOptions {
   std::string bind_address = "127.0.0.1";
-  std::uint16_t port = 8080;                  ///< 0: any free port
-  std::size_t max_connections = 256;          ///< HTTP connections at once; more are closed at once
+  std::uint16_t port = 8080;  ///< 0: any free port
+  /// HTTP connections at once: a new one closes the one waiting longest for a request, or is
+  /// closed at once when every one is busy.
+  std::size_t max_connections = 256;
   std::size_t max_pages = 64;                 ///< WebSockets at once; more get 503
   std::size_t max_message_bytes = 64 * 1024;  ///< larger page messages close it with 1009
   std::chrono::seconds idle_timeout{30};      ///< an HTTP connection that sends nothing
@@ -54,6 +56,7 @@ struct WebServerStatistics {
   std::atomic<std::uint64_t> files_sent{0};
   std::atomic<std::uint64_t> requests_refused{0};  ///< bad path, method, host, or not found
   std::atomic<std::uint64_t> connections_refused{0};
+  std::atomic<std::uint64_t> idle_connections_closed{0};  ///< to make room for new ones
   std::atomic<std::uint64_t> pages_opened{0};
   std::atomic<std::uint64_t> messages_too_large{0};
 };
