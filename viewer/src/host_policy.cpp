@@ -1,28 +1,15 @@
 #include "lcmtf_viewer/host_policy.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <boost/asio/ip/address.hpp>
-#include <cctype>
 
+#include "ascii_lowercase.hpp"
 #include "lcmtf/printable.hpp"
+#include "machine_name.hpp"
 
 namespace lcmtf::viewer {
 
 namespace {
-
-std::string lowercase(std::string_view text) {
-  std::string result(text);
-  for (char& c : result) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return result;
-}
-
-std::string machineName() {
-  char name[256] = {};
-  if (gethostname(name, sizeof name - 1) != 0) return {};
-  return lowercase(name);
-}
 
 // The name in host[:port] or [v6-address][:port]; nothing when the text is not one.
 std::optional<std::string> nameOf(std::string_view authority) {
@@ -68,11 +55,11 @@ std::string withoutDefaultPort(const std::string& scheme, std::string authority)
 
 HostPolicy::HostPolicy(std::vector<std::string> allowed_hosts,
                        std::vector<std::string> allowed_origins)
-    : machine_name_(machineName()) {
-  for (const std::string& host : allowed_hosts) allowed_hosts_.push_back(lowercase(host));
+    : machine_name_(asciiLowercase(machineName())) {
+  for (const std::string& host : allowed_hosts) allowed_hosts_.push_back(asciiLowercase(host));
   for (std::string origin : allowed_origins) {
     while (!origin.empty() && origin.back() == '/') origin.pop_back();
-    allowed_origins_.push_back(lowercase(origin));
+    allowed_origins_.push_back(asciiLowercase(origin));
   }
 }
 
@@ -86,7 +73,7 @@ bool HostPolicy::isOwnName(const std::string& name) const {
 }
 
 std::optional<std::string> HostPolicy::refuseHost(std::string_view host) const {
-  const std::optional<std::string> name = nameOf(lowercase(host));
+  const std::optional<std::string> name = nameOf(asciiLowercase(host));
   if (!name) return "the Host header '" + printable(host) + "' is not a host name";
   if (isOwnName(*name)) return std::nullopt;
   return "'" + printable(*name) +
@@ -98,7 +85,7 @@ std::optional<std::string> HostPolicy::refuseHost(std::string_view host) const {
 std::optional<std::string> HostPolicy::refuseOrigin(std::string_view origin,
                                                     std::string_view host) const {
   if (origin.empty()) return std::nullopt;
-  std::string page = lowercase(origin);
+  std::string page = asciiLowercase(origin);
   while (!page.empty() && page.back() == '/') page.pop_back();
   if (std::any_of(allowed_origins_.begin(), allowed_origins_.end(),
                   [&](const std::string& allowed) { return allowed == "*" || allowed == page; })) {
@@ -109,7 +96,7 @@ std::optional<std::string> HostPolicy::refuseOrigin(std::string_view origin,
     const std::string scheme = page.substr(0, separator);
     if ((scheme == "http" || scheme == "https") &&
         withoutDefaultPort(scheme, page.substr(separator + 3)) ==
-            withoutDefaultPort(scheme, lowercase(host))) {
+            withoutDefaultPort(scheme, asciiLowercase(host))) {
       return std::nullopt;
     }
   }

@@ -1,12 +1,12 @@
 #include "lcmtf_viewer/robot_view.hpp"
 
-#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
 
 #include <urdf_model/model.h>
 
+#include "ascii_lowercase.hpp"
 #include "lcmtf_urdf/urdfdom_parse.hpp"
 
 namespace lcmtf::viewer {
@@ -32,10 +32,7 @@ bool allFinite(const json& value) {
 }
 
 std::string lowerExtension(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
+  return asciiLowercase(path.extension().string());
 }
 
 class ViewBuilder {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "ascii_lowercase.hpp"
+
 namespace lcmtf::viewer {
 
 namespace {
@@ -43,9 +45,7 @@ std::optional<std::string> refuseRequestTarget(std::string_view target) {
 }
 
 std::string contentTypeFor(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = asciiLowercase(path.extension().string());
   static const std::map<std::string, std::string, std::less<>> kTypes = {
       {".html", "text/html; charset=utf-8"},
       {".js", "text/javascript; charset=utf-8"},

@@ -1,7 +1,5 @@
 #include "lcmtf_viewer/viewer_program.hpp"
 
-#include <unistd.h>
-
 #include <cstdlib>
 #include <iostream>
 #include <mutex>
@@ -17,6 +15,7 @@
 #include "lcmtf_viewer/viewer_hub.hpp"
 #include "lcmtf_viewer/web_assets.hpp"
 #include "lcmtf_viewer/web_server.hpp"
+#include "machine_name.hpp"
 
 namespace lcmtf::viewer {
 
@@ -42,8 +41,8 @@ constexpr const char* kExamples =
 std::string pageUrl(const std::string& bind_address, std::uint16_t port) {
   std::string host = bind_address;
   if (host == "0.0.0.0" || host == "::") {
-    char name[256] = {};
-    host = gethostname(name, sizeof name - 1) == 0 && name[0] ? name : "localhost";
+    host = machineName();
+    if (host.empty()) host = "localhost";
   } else if (host.find(':') != std::string::npos) {
     host = "[" + host + "]";
   }
