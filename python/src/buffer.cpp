@@ -13,14 +13,26 @@ namespace lcmtf::python {
 
 namespace {
 
+/// Every Buffer made from Python: its reporter, for the collector to see.
+struct PythonBuffer : Buffer {
+  using Buffer::Buffer;
+  CallableCellPtr reporter;
+};
+
+CallableCell* reporterOf(Buffer& buffer) {
+  return static_cast<PythonBuffer&>(buffer).reporter.get();
+}
+
 BufferPtr makeBuffer(FloatArg cache_time, py::handle reporter) {
   const Duration history = duration(cache_time, "cache_time");
   if (history == Duration::zero()) {
     throw py::value_error("cache_time must be more than 0 seconds");
   }
-  auto report = optionalMessageCallback(reporter, "reporter", "lcmtf buffer reporter");
-  auto buffer = std::make_shared<Buffer>(history);
-  if (report) buffer->setErrorReporter(std::move(report));
+  auto buffer = std::make_shared<PythonBuffer>(history);
+  buffer->reporter = callableArgument(reporter, "reporter");
+  if (buffer->reporter) {
+    buffer->setErrorReporter(messageCallback(buffer->reporter, "lcmtf buffer reporter"));
+  }
   return buffer;
 }
 
@@ -96,7 +108,7 @@ void defineIntrospection(BufferClass& buffer_class) {
 
 void bindBuffer(py::module_& module) {
   BufferClass buffer_class(
-      module, "Buffer",
+      module, "Buffer", collectableCallback<Buffer, &reporterOf>(),
       "The frame tree over time: each edge's recent history and the static edges, and lookups "
       "between any two frames at any stored time. Fill it with a TransformListener, or by "
       "hand with set_transform. Any number of threads may look up while others insert.");

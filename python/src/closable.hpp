@@ -9,6 +9,7 @@
 #include <string>
 #include "later_close.hpp"
 #include "lcmtf/transform_listener.hpp"
+#include "python_callback.hpp"
 
 namespace lcmtf::python {
 
@@ -31,6 +32,10 @@ class Closable {
   ~Closable() { close(); }
   Closable(const Closable&) = delete;
   Closable& operator=(const Closable&) = delete;
+
+  /// Holds the cell of a callable `object` calls, for the collector to see (collectableCallback).
+  void holdCallback(CallableCellPtr cell) { callback_ = std::move(cell); }
+  static CallableCell* callbackOf(Closable& closable) { return closable.callback_.get(); }
 
   Object& get() const {
     if (!object_) throw py::value_error("the " + name_ + " is closed");
@@ -56,6 +61,7 @@ class Closable {
   std::shared_ptr<const void> keep_alive_;
   std::string name_;
   std::unique_ptr<Object> object_;
+  CallableCellPtr callback_;
 };
 
 /// close(), and use in a with block, which closes it at the end.

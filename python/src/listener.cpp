@@ -49,11 +49,13 @@ std::unique_ptr<Listener> makeListener(py::handle buffer_arg, OptionalStrArg lcm
   options.max_interpolation_gap = duration(max_interpolation_gap, "max_interpolation_gap");
   options.limits.max_name_bytes = count(max_name_bytes, "max_name_bytes", 1);
   options.limits.max_array_elements = count(max_array_elements, "max_array_elements", 1);
-  options.reporter = reporter.is_none()
-                         ? defaults.reporter
-                         : optionalMessageCallback(reporter, "reporter", "lcmtf listener reporter");
+  CallableCellPtr report = callableArgument(reporter, "reporter");
+  options.reporter =
+      report ? messageCallback(report, "lcmtf listener reporter") : defaults.reporter;
   auto listener = std::make_unique<TransformListener>(*buffer, std::move(options));
-  return std::make_unique<Listener>(std::move(listener), "listener", buffer);
+  auto closable = std::make_unique<Listener>(std::move(listener), "listener", buffer);
+  closable->holdCallback(std::move(report));
+  return closable;
 }
 
 }  // namespace
@@ -61,7 +63,7 @@ std::unique_ptr<Listener> makeListener(py::handle buffer_arg, OptionalStrArg lcm
 void bindListener(py::module_& module) {
   const ListenerOptions defaults;
   py::class_<Listener> listener_class(
-      module, "TransformListener",
+      module, "TransformListener", collectableCallback<Listener, &Listener::callbackOf>(),
       "Feeds a Buffer from the TF and TF_STATIC channels on a thread of its own, and asks "
       "static broadcasters to resend when it starts. Nothing from the network can crash it or "
       "corrupt the buffer: bad input is counted in statistics() and reported once per kind.");

@@ -1,9 +1,10 @@
 #pragma once
 
-// A Python callable called from a C++ thread.
+// A Python callable called from a C++ thread, held where the garbage collector can see it.
 
 #include <pybind11/pybind11.h>
 
+#include <exception>
 #include <functional>
 #include <memory>
 #include <string>
@@ -12,35 +13,75 @@ namespace lcmtf::python {
 
 namespace py = pybind11;
 
-/// Calls `callable(message)` with the GIL taken, from whichever thread calls it; an exception
-/// it raises is printed as unraisable (it has no caller to go to).
-inline std::function<void(const std::string&)> messageCallback(py::object callable,
+/// The one strong reference C++ holds to a callback; read and written with the GIL held. The
+/// Python object owning it visits it from tp_traverse and drops it in tp_clear (see
+/// collectableCallback), so a cycle through it, such as an object that passes its own method
+/// and holds the owner, is collected instead of leaking.
+struct CallableCell {
+  py::object callable;
+};
+using CallableCellPtr = std::shared_ptr<CallableCell>;
+
+/// The cell of `value`: null when it is None, TypeError naming `argument` when it is not
+/// callable.
+inline CallableCellPtr callableArgument(py::handle value, const char* argument) {
+  if (value.is_none()) return nullptr;
+  if (!PyCallable_Check(value.ptr())) {
+    throw py::type_error(std::string(argument) + " must be callable or None, not " +
+                         Py_TYPE(value.ptr())->tp_name);
+  }
+  return CallableCellPtr(new CallableCell{py::reinterpret_borrow<py::object>(value)},
+                         [](CallableCell* cell) {
+                           py::gil_scoped_acquire gil;
+                           delete cell;
+                         });
+}
+
+/// Calls the cell's callable with the message, the GIL taken, from whichever thread calls it;
+/// nothing once the collector has dropped it. An exception it raises is printed as unraisable
+/// (it has no caller to go to).
+inline std::function<void(const std::string&)> messageCallback(CallableCellPtr cell,
                                                                const char* context) {
-  auto held = std::shared_ptr<py::object>(new py::object(std::move(callable)), [](py::object* o) {
+  return [cell = std::move(cell), context](const std::string& message) {
     py::gil_scoped_acquire gil;
-    delete o;
-  });
-  return [held, context](const std::string& message) {
-    py::gil_scoped_acquire gil;
+    const py::object callable = cell->callable;
+    if (!callable || callable.is_none()) return;
     try {
-      (*held)(message);
+      callable(message);
     } catch (py::error_already_set& error) {
       error.discard_as_unraisable(context);
     }
   };
 }
 
-/// messageCallback for an optional callable argument: empty when it is None, TypeError naming
-/// `argument` when it is not callable.
-inline std::function<void(const std::string&)> optionalMessageCallback(py::handle value,
-                                                                       const char* argument,
-                                                                       const char* context) {
-  if (value.is_none()) return {};
-  if (!PyCallable_Check(value.ptr())) {
-    throw py::type_error(std::string(argument) + " must be callable or None, not " +
-                         Py_TYPE(value.ptr())->tp_name);
+/// The cell a Python object of a bound type holds, or null when it holds none or its C++
+/// object is not made yet (the collector may look before __init__ has run).
+template <class Cpp, CallableCell* (*CellOf)(Cpp&)>
+CallableCell* cellIn(PyObject* self) {
+  try {
+    return CellOf(py::cast<Cpp&>(py::handle(self)));
+  } catch (const std::exception&) {
+    return nullptr;
   }
-  return messageCallback(py::reinterpret_borrow<py::object>(value), context);
+}
+
+/// Makes the objects of a bound type visible to the garbage collector through the callable
+/// `CellOf(object)` holds (null: none).
+template <class Cpp, CallableCell* (*CellOf)(Cpp&)>
+py::custom_type_setup collectableCallback() {
+  return py::custom_type_setup([](PyHeapTypeObject* heap_type) {
+    PyTypeObject* type = &heap_type->ht_type;
+    type->tp_flags |= Py_TPFLAGS_HAVE_GC;
+    type->tp_traverse = [](PyObject* self, visitproc visit, void* arg) -> int {
+      Py_VISIT(Py_TYPE(self));
+      if (CallableCell* cell = cellIn<Cpp, CellOf>(self)) Py_VISIT(cell->callable.ptr());
+      return 0;
+    };
+    type->tp_clear = [](PyObject* self) -> int {
+      if (CallableCell* cell = cellIn<Cpp, CellOf>(self)) cell->callable = py::none();
+      return 0;
+    };
+  });
 }
 
 }  // namespace lcmtf::python

@@ -1,9 +1,11 @@
 """A buffer filled by hand answers lookups, introspection and velocity as in closed form."""
 
 import copy
+import gc
 import math
 import pickle
 import sys
+import weakref
 
 import numpy as np
 import pytest
@@ -147,6 +149,24 @@ def test_a_reporter_that_raises_does_not_undo_the_refusal(monkeypatch):
     assert [str(u.exc_value) for u in unraisable] == ["reporter broke"]
     assert buffer.set_transform(lcmtf.TransformStamped("a", "b", EPOCH), "test") is True
     assert buffer.statistics().rejected["frame is its own parent"] == 1
+
+
+def test_an_object_whose_method_is_its_own_buffers_reporter_is_collected():
+    class Node:
+        def __init__(self):
+            self.buffer = lcmtf.Buffer(reporter=self.report)
+            self.reports = []
+
+        def report(self, message):
+            self.reports.append(message)
+
+    node = Node()
+    node.buffer.set_transform(lcmtf.TransformStamped("a", "a", EPOCH), "test")
+    assert len(node.reports) == 1
+    gone = weakref.ref(node)
+    del node
+    gc.collect()
+    assert gone() is None
 
 
 def test_velocity_of_the_turning_base():

@@ -1,11 +1,13 @@
 """lcmtf in Python and C++ programs talk over udpm (ttl=0, a port of each test's own): a Python
 listener hears C++ publishers, and a C++ listener hears Python broadcasters."""
 
+import gc
 import math
 import re
 import subprocess
 import threading
 import time
+import weakref
 
 import numpy as np
 import pytest
@@ -154,3 +156,19 @@ def test_a_transform_the_buffer_refuses_goes_to_the_buffers_reporter(udpm_url):
             time.sleep(0.01)
     assert len(buffer_reports) == 1 and "quaternion of norm 2" in buffer_reports[0], buffer_reports
     assert listener_reports == []
+
+
+def test_an_object_whose_method_is_its_listeners_reporter_is_collected_and_the_listener_stops():
+    class Node:
+        def __init__(self):
+            self.buffer = lcmtf.Buffer()
+            self.listener = lcmtf.TransformListener(self.buffer, "memq://", reporter=self.report)
+
+        def report(self, message):
+            pass
+
+    node = Node()
+    gone, listener_gone = weakref.ref(node), weakref.ref(node.listener)
+    del node
+    gc.collect()
+    assert gone() is None and listener_gone() is None
