@@ -41,8 +41,10 @@ struct ListenerOptions {
   /// When not zero, set on the buffer at start (BufferCore::setMaxInterpolationGap): lookups
   /// between samples further apart, as after lost batches, fail instead of interpolating.
   Duration max_interpolation_gap = Duration::zero();
-  /// Where the first refusal of each kind is reported; null: nowhere. Default: stderr. It is
-  /// called on the listener's thread, which cannot destroy the listener (see onItsThread).
+  /// Where the first message of each kind the listener refuses is reported; null: nowhere.
+  /// Default: stderr. Transforms the buffer refuses go to the buffer's own reporter
+  /// (BufferCore::setErrorReporter). It is called on the listener's thread, which cannot
+  /// destroy the listener (see onItsThread).
   std::function<void(const std::string& message)> reporter = [](const std::string& message) {
     std::cerr << "lcmtf listener: " << message << '\n';
   };
