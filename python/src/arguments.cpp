@@ -96,8 +96,8 @@ TimePoint timePoint(FloatArg value, const char* argument) {
   const double time = number(value, argument);
   if (!(time >= 0.0 && time <= kMostSeconds)) {
     throw py::value_error(std::string(argument) +
-                          " must be seconds since the epoch (0.0 for the latest), finite and not "
-                          "negative; got " +
+                          " must be seconds since the epoch from 0 to 9.2e12 (0.0 for the latest); "
+                          "got " +
                           std::string(py::repr(py::float_(time))));
   }
   return fromSeconds(time);

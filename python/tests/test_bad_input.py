@@ -118,6 +118,12 @@ def test_bad_input_raises_naming_the_argument(call, error, argument):
     assert buffer.statistics().inserted == 1
 
 
+@pytest.mark.parametrize("time", [math.nan, -1.0, 1e300])
+def test_a_time_out_of_range_is_told_the_range(time):
+    with pytest.raises(ValueError, match=r"^time must be seconds since the epoch from 0 to 9\.2e12"):
+        lcmtf.Buffer().lookup_transform("map", "base", time)
+
+
 def test_a_closed_listener_says_so():
     listener = lcmtf.TransformListener(lcmtf.Buffer(), "memq://")
     listener.close()
