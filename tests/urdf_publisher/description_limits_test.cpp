@@ -65,6 +65,22 @@ TEST(DescriptionLimits, LinksAreTheElementsNamedLinkExactly) {
             "3 deep, 10 elements, 2 links");
 }
 
+// TinyXML reading UTF-8 skips these between '<' and the name: each is a link to it.
+TEST(DescriptionLimits, LinksNamedAfterByteOrderMarksAndWhitespaceAreLinks) {
+  EXPECT_EQ(shapeOf("<?xml version='1.0'?><robot name='r'><\xEF\xBB\xBFlink name='a'/>"
+                    "<\xEF\xBF\xBE link name='b'/><\xEF\xBF\xBF\xEF\xBB\xBF\tlink name='c'>"
+                    "</link><\xEF\xBB\xBFlinks/><link\xEF\xBB\xBF/></robot>"),
+            "2 deep, 6 elements, 3 links");
+}
+
+TEST(DescriptionLimits, LinksBehindByteOrderMarksCountTowardsTheLimit) {
+  const DescriptionLimits limits;
+  const std::string link = "<\xEF\xBB\xBFlink name='l'/>";
+  EXPECT_EQ(
+      refusal("<?xml version='1.0'?><robot>" + repeated(link, limits.max_links + 1) + "</robot>"),
+      "test.urdf: 10001 links; the limit is 10000");
+}
+
 TEST(DescriptionLimits, CommentsHideTheirMarkupUpToTheFirstEndAfterTheStart) {
   EXPECT_EQ(shapeOf("<r><!-- <a><b><link/> --></r>"), "1 deep, 1 elements, 0 links");
   EXPECT_EQ(shapeOf("<r><!--></a></r>--><a/></r>"), "2 deep, 2 elements, 0 links");

@@ -83,8 +83,9 @@ class DescriptionScanner {
     return std::min(end + 1, text_.size());
   }
 
-  std::size_t pastElementTag(std::size_t name_start) {
-    std::size_t at = name_start + 1;
+  std::size_t pastElementTag(std::size_t after_less_than) {
+    const std::size_t name_start = pastSkippedBeforeName(after_less_than);
+    std::size_t at = name_start;
     while (at < text_.size() && continuesName(text_[at])) ++at;
     ++shape_.elements;
     if (text_.substr(name_start, at - name_start) == "link") ++shape_.links;
@@ -99,6 +100,25 @@ class DescriptionScanner {
     if (at >= text_.size()) return text_.size();
     if (text_[at - 1] == '/') leaveElement();
     return at + 1;
+  }
+
+  // TinyXML reading UTF-8 (a document with a byte-order mark, or declared UTF-8 or with no
+  // encoding) skips whitespace, the byte-order mark and the non-characters U+FFFE and U+FFFF
+  // between '<' and an element's name: "<\xEF\xBB\xBFlink" is a link to it. They are skipped
+  // here whatever the encoding, so a document in another one may count a link too many, never
+  // one too few.
+  std::size_t pastSkippedBeforeName(std::size_t from) const {
+    while (from < text_.size()) {
+      if (startsWith(from, "\xEF\xBB\xBF") || startsWith(from, "\xEF\xBF\xBE") ||
+          startsWith(from, "\xEF\xBF\xBF")) {
+        from += 3;
+      } else if (isWhitespace(text_[from])) {
+        ++from;
+      } else {
+        break;
+      }
+    }
+    return from;
   }
 
   void enterElement() {
