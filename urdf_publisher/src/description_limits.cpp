@@ -102,11 +102,11 @@ class DescriptionScanner {
     return at + 1;
   }
 
-  // TinyXML reading UTF-8 (a document with a byte-order mark, or declared UTF-8 or with no
-  // encoding) skips whitespace, the byte-order mark and the non-characters U+FFFE and U+FFFF
-  // between '<' and an element's name: "<\xEF\xBB\xBFlink" is a link to it. They are skipped
-  // here whatever the encoding, so a document in another one may count a link too many, never
-  // one too few.
+  // TinyXML reading UTF-8 (a document that starts with a byte-order mark, or whose XML
+  // declaration names UTF-8 or no encoding) skips whitespace, the byte-order mark and the
+  // non-characters U+FFFE and U+FFFF between '<' and an element's name: "<\xEF\xBB\xBFlink" is a
+  // link to it. They are skipped here whatever the encoding, so a document in another one may count
+  // a link too many, never one too few.
   std::size_t pastSkippedBeforeName(std::size_t from) const {
     while (from < text_.size()) {
       if (startsWith(from, "\xEF\xBB\xBF") || startsWith(from, "\xEF\xBF\xBE") ||
