@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include "lcmtf/programs/command_line.hpp"
@@ -91,6 +92,10 @@ std::vector<StaticTransformSpec> parseStaticTransformYaml(const std::string& tex
   YAML::Node root;
   try {
     root = YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    throw CommandLineError(
+        where(name, e.mark) + ": not valid YAML: nested deeper than the YAML reader goes (" +
+        std::to_string(e.depth()) + " levels; a transform file nests 3 at most)");
   } catch (const YAML::Exception& e) {
     throw CommandLineError(where(name, e.mark) + ": not valid YAML: " + e.msg);
   }

@@ -12,6 +12,7 @@
 namespace lcmtf::nodes {
 namespace {
 
+using testing::AllOf;
 using testing::HasSubstr;
 
 // The message parseStaticTransformYaml refuses `text` with.
@@ -74,6 +75,17 @@ TEST(StaticTransformFile, ValueThatIsNoNumberIsNamedWithItsPosition) {
 TEST(StaticTransformFile, BrokenYamlIsReportedWithItsPosition) {
   EXPECT_THAT(refusal("- {frame_id: a, child_frame_id: b\n"),
               HasSubstr("mounts.yaml:2:1: not valid YAML"));
+}
+
+// The YAML reader calls this "bad file".
+TEST(StaticTransformFile, YamlNestedDeeperThanTheReaderGoesIsSaidToBe) {
+  for (const std::string& open : {std::string("["), std::string("{a: ")}) {
+    std::string deep;
+    for (int level = 0; level < 100'000; ++level) deep += open;
+    EXPECT_THAT(refusal(deep),
+                AllOf(HasSubstr(": not valid YAML: nested deeper than the YAML reader goes ("),
+                      HasSubstr(" levels; a transform file nests 3 at most)")));
+  }
 }
 
 TEST(StaticTransformFile, ShapesOtherThanAListOfMapsAreRefused) {
