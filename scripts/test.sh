@@ -2,9 +2,9 @@
 # Builds lcmtf and runs the tests: every test in a normal build (the tf2 agreement tests
 # included: ROS tf2 is installed for them; the Python package's tests run here only, as the
 # sanitizer builds leave the package out), the concurrency tests under ThreadSanitizer, short
-# libFuzzer runs over decode-and-insert, robot descriptions and the viewer's page messages beside
-# every unit test again in an ASan+UBSan build, where each quick lookup is also checked against
-# the walk.
+# libFuzzer runs over decode-and-insert, robot descriptions, static transform files and the
+# viewer's page messages beside every unit test again in an ASan+UBSan build, where each quick
+# lookup is also checked against the walk.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh --tests

@@ -31,6 +31,25 @@ TEST(Printable, ReportsKeepTheirLinesButNotOtherControlBytes) {
   EXPECT_EQ(printableLines(""), "");
 }
 
+TEST(TerminalSafe, ControlCharactersAndMalformedUtf8BecomeHexEscapes) {
+  EXPECT_EQ(terminalSafe("robot 'a\x1b[2Jb'\n  root \x07\t\r"),
+            "robot 'a\\x1b[2Jb'\n  root \\x07\\x09\\x0d");
+  EXPECT_EQ(terminalSafe(std::string("nul\0\x7f", 5)), "nul\\x00\\x7f");
+  EXPECT_EQ(terminalSafe("c1 \xc2\x9b"
+                         "31m \xc2\x80"),
+            "c1 \\xc2\\x9b31m \\xc2\\x80");
+  EXPECT_EQ(terminalSafe("cut \xe2\x82 lone \xff \xc0\xaf"),
+            "cut \\xe2\\x82 lone \\xff \\xc0\\xaf");
+}
+
+TEST(TerminalSafe, TextAlreadySafeIsUnchanged) {
+  const std::string safe = "caf\xc3\xa9 \xc2\xa0\xe2\x82\xac \xf0\x9f\xa4\x96 C:\\path\n";
+  EXPECT_EQ(terminalSafe(safe), safe);
+  const std::string escaped = printable("a\x1b\\b\xc3\xa9");
+  EXPECT_EQ(terminalSafe(escaped), escaped);
+  EXPECT_EQ(terminalSafe(""), "");
+}
+
 TEST(DotQuoted, NamesFromTheNetworkAreQuotedSoTheyCannotBreakAGraph) {
   EXPECT_EQ(dotQuoted("plain"), "\"plain\"");
   EXPECT_EQ(dotQuoted("a\"b"), "\"a\\\"b\"");

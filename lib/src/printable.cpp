@@ -71,6 +71,13 @@ void appendYamlEscape(std::string& out, char32_t c) {
   for (int shift = 4 * (digits - 1); shift >= 0; shift -= 4) out += kHex[(c >> shift) & 0xf];
 }
 
+void appendHexEscape(std::string& out, unsigned char byte) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  out += "\\x";
+  out += kHex[byte >> 4];
+  out += kHex[byte & 0xf];
+}
+
 }  // namespace
 
 std::string yamlQuoted(std::string_view text) {
@@ -106,7 +113,6 @@ std::string yamlQuoted(std::string_view text) {
 }
 
 std::string printable(std::string_view text) {
-  static constexpr char kHex[] = "0123456789abcdef";
   std::string out;
   out.reserve(text.size());
   for (const char c : text) {
@@ -116,9 +122,7 @@ std::string printable(std::string_view text) {
     } else if (byte >= 0x20 && byte < 0x7f) {
       out += c;
     } else {
-      out += "\\x";
-      out += kHex[byte >> 4];
-      out += kHex[byte & 0xf];
+      appendHexEscape(out, byte);
     }
   }
   return out;
@@ -133,6 +137,24 @@ std::string printableLines(std::string_view text) {
     if (end == text.size()) break;
     out += '\n';
     start = end + 1;
+  }
+  return out;
+}
+
+std::string terminalSafe(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t length =
+        static_cast<unsigned char>(text[at]) < 0x80 ? 1 : utf8SequenceLength(text, at);
+    const std::string_view sequence = text.substr(at, std::max<std::size_t>(length, 1));
+    const char32_t c = length ? codePoint(sequence) : 0;
+    if (c == '\n' || (c >= 0x20 && c != 0x7f && !(c >= 0x80 && c <= 0x9f))) {
+      out += sequence;
+    } else {
+      for (const char byte : sequence) appendHexEscape(out, static_cast<unsigned char>(byte));
+    }
+    at += sequence.size();
   }
   return out;
 }

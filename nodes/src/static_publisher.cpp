@@ -6,6 +6,7 @@
 
 #include "lcmtf/nodes/static_transform_file.hpp"
 #include "lcmtf/nodes/static_transform_spec.hpp"
+#include "lcmtf/printable.hpp"
 #include "lcmtf/programs/roll_pitch_yaw.hpp"
 #include "lcmtf/static_transform_broadcaster.hpp"
 
@@ -254,7 +255,7 @@ int runStaticPublisher(const StaticPublisherOptions& options, std::ostream& out,
     out << ", and whenever asked on " << options.connection.request_channel << ":\n";
   }
   for (const TransformStamped& transform : options.transforms) {
-    out << "  " << describeStaticTransform(transform) << '\n';
+    out << "  " << terminalSafe(describeStaticTransform(transform)) << '\n';
   }
   out << std::flush;
   if (options.check_only) return kExitSuccess;

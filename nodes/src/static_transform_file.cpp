@@ -12,6 +12,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "lcmtf/programs/command_line.hpp"
+#include "lcmtf/programs/text_position.hpp"
 
 namespace lcmtf::nodes {
 
@@ -89,6 +90,12 @@ const std::vector<std::string>& staticTransformFileKeys() {
 
 std::vector<StaticTransformSpec> parseStaticTransformYaml(const std::string& text,
                                                           const std::string& name) {
+  // yaml-cpp stops at a NUL byte with a misleading message ("unknown escape character").
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+    const programs::TextPosition at = programs::positionOf(text, nul);
+    throw CommandLineError(name + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                           ": not valid YAML: a NUL byte (YAML text has none)");
+  }
   YAML::Node root;
   try {
     root = YAML::Load(text);

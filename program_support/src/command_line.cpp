@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <ostream>
 
+#include "lcmtf/printable.hpp"
+
 namespace lcmtf::programs {
 
 namespace {
@@ -64,7 +66,8 @@ std::optional<int> parseCommandLine(CLI::App& app, const std::vector<std::string
 }
 
 int reportBadArguments(const CLI::App& app, const std::string& message, std::ostream& err) {
-  err << app.get_name() << ": " << message << "\nRun '" << app.get_name() << " --help' for usage.\n"
+  err << app.get_name() << ": " << terminalSafe(message) << "\nRun '" << app.get_name()
+      << " --help' for usage.\n"
       << std::flush;
   return kExitBadArguments;
 }

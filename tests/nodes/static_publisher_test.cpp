@@ -214,6 +214,25 @@ TEST(StaticPublisherCommandLine, FileAndFlagsCombineButAChildGivenTwiceIsRefused
   std::filesystem::remove_all(directory);
 }
 
+// YAML's "\e" is the escape character: a file could otherwise clear the screen or recolour it.
+TEST(StaticPublisher, ControlCharactersFromAFileReachTheTerminalEscaped) {
+  const std::filesystem::path directory = lcmtf_test::makeTemporaryDirectory("static-publisher");
+  const std::string bad_key = (directory / "bad_key.yaml").string();
+  std::ofstream(bad_key) << "- {frame_id: base, child_frame_id: camera, \"\\e[2Jx\": 1}\n";
+  const std::string message = refusal({"--file", bad_key});
+  EXPECT_THAT(message, HasSubstr("unknown key '\\x1b[2Jx'"));
+  EXPECT_EQ(message.find('\x1b'), std::string::npos);
+
+  const std::string names = (directory / "names.yaml").string();
+  std::ofstream(names) << "- {frame_id: \"b\\e[31mase\", child_frame_id: \"caf\u00e9\\a\"}\n";
+  std::ostringstream out, err;
+  const std::atomic<bool> stop{false};
+  EXPECT_EQ(staticPublisherCommand({"--check", "--file", names}, out, err, stop), kExitSuccess)
+      << err.str();
+  EXPECT_THAT(out.str(), HasSubstr("b\\x1b[31mase -> caf\u00e9\\x07: translation [0 0 0] m"));
+  std::filesystem::remove_all(directory);
+}
+
 TEST(StaticPublisherCommandLine, HelpTeachesEveryFormAndExitsZero) {
   const Parsed parsed = parse({"--help"});
   EXPECT_EQ(parsed.status, std::optional<int>(kExitSuccess));

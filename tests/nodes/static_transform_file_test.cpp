@@ -88,6 +88,11 @@ TEST(StaticTransformFile, YamlNestedDeeperThanTheReaderGoesIsSaidToBe) {
   }
 }
 
+TEST(StaticTransformFile, NulByteIsRefusedAtItsPlace) {
+  EXPECT_EQ(refusal(std::string("- {frame_id: a, child_frame_id: b}\n- {frame_id: b\0", 50)),
+            "mounts.yaml:2:15: not valid YAML: a NUL byte (YAML text has none)");
+}
+
 TEST(StaticTransformFile, ShapesOtherThanAListOfMapsAreRefused) {
   EXPECT_THAT(refusal(""), HasSubstr("expected a non-empty list of transforms"));
   EXPECT_THAT(refusal("transforms: []\n"), HasSubstr("expected a non-empty list of transforms"));

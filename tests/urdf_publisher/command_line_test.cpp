@@ -240,6 +240,22 @@ TEST(UrdfPublisherRun, CheckListsTheRobotAndExitsZero) {
   EXPECT_EQ(run.err, "");
 }
 
+// Names of a URDF, which may come from the network, with the terminal's escape and bell.
+TEST(UrdfPublisherRun, ControlCharactersInNamesReachTheTerminalEscaped) {
+  const std::string path = testing::TempDir() + "/control_characters.urdf";
+  std::ofstream(path) << "<robot name='r&#x1b;[2J'><link name='base&#x7;'/><link name='arm'/>"
+                         "<joint name='j' type='fixed'><parent link='base&#x7;'/>"
+                         "<child link='arm'/></joint></robot>";
+  for (const ProgramRun& run : {runUrdfPublisherWith({"--check", path}),
+                                runUrdfPublisherWith({"--lcm-url", "memq://", path}, 50ms)}) {
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_THAT(run.out,
+                HasSubstr("robot 'r\\x1b[2J' from " + path + ": 2 links, root 'base\\x07'"));
+    EXPECT_EQ(run.out.find_first_of("\x1b\x07"), std::string::npos) << run.out;
+  }
+  std::remove(path.c_str());
+}
+
 TEST(UrdfPublisherRun, RunsUntilStoppedThenSaysWhatItHandled) {
   const ProgramRun run = runUrdfPublisherWith({"--lcm-url", "memq://", EXAMPLE_URDF}, 150ms);
   EXPECT_EQ(run.exit_code, 0);

@@ -212,6 +212,14 @@ TEST(RobotModel, XmlErrorIsRefusedNamingTheFileAndTheProblem) {
   EXPECT_THAT(refusal("<html/>"), HasSubstr("Could not find the 'robot' element"));
 }
 
+// The XML readers stop at the first NUL byte, so the rest of the text would be dropped unread.
+TEST(RobotModel, NulByteIsRefusedAtItsPlaceRatherThanEndingTheText) {
+  EXPECT_EQ(refusal(twoLinks("type='fixed'", "") + std::string("\n\0<junk", 7)),
+            "test.urdf: not XML: a NUL byte at line 2, column 1 (XML text has none)");
+  EXPECT_EQ(refusal(std::string("<robot name='r'>\n  <li\0nk name='a'/></robot>", 44)),
+            "test.urdf: not XML: a NUL byte at line 2, column 6 (XML text has none)");
+}
+
 TEST(RobotModel, TwoRootsAreRefused) {
   EXPECT_THAT(refusal("<robot name='r'><link name='a'/><link name='b'/></robot>"),
               HasSubstr("test.urdf: invalid URDF: Failed to find root link: Two root links found"));

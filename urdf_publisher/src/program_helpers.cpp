@@ -1,16 +1,17 @@
 #include "program_helpers.hpp"
 
+#include "lcmtf/printable.hpp"
 #include "lcmtf/programs/number_text.hpp"
 #include "lcmtf_urdf/robot_description.hpp"
 
 namespace lcmtf::urdf {
 
 void ProgramOutput::say(const std::string& message) const {
-  out << program << ": " << message << std::endl;
+  out << program << ": " << terminalSafe(message) << std::endl;
 }
 
 void ProgramOutput::complain(const std::string& message) const {
-  err << program << ": " << message << std::endl;
+  err << program << ": " << terminalSafe(message) << std::endl;
 }
 
 std::function<void(const std::string&)> ProgramOutput::reporter() const {

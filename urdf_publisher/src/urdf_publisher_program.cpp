@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "command_line_helpers.hpp"
+#include "lcmtf/printable.hpp"
 #include "lcmtf/programs/lcm_connection.hpp"
 #include "lcmtf/programs/stop_signal.hpp"
 #include "lcmtf_urdf/robot_description.hpp"
@@ -89,7 +90,7 @@ int runUrdfPublisher(const UrdfPublisherConfig& config, const std::atomic<bool>&
   std::optional<RobotModel> robot = loadFromFile(config.urdf_path, output);
   if (!config.urdf_path.empty() && !robot) return 1;
   if (config.check_only) {
-    out << describeRobot(*robot, prefix, true);
+    out << terminalSafe(describeRobot(*robot, prefix, true));
     return 0;
   }
   const std::unique_ptr<lcm::LCM> lcm = programs::openLcmOrReport(config.lcm_url, kProgram, err);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "lcmtf/printable.hpp"
+#include "lcmtf/programs/text_position.hpp"
 #include "lcmtf_urdf/robot_model.hpp"
 
 namespace lcmtf::urdf {
@@ -24,6 +25,12 @@ void parseXmlOrRefuse(const std::string& text, const std::string& source, TiXmlD
   if (text[start] != '<') {
     throw UrdfError(source + ": not XML: a URDF starts with '<', this starts with '" +
                     opening(text, start) + "'");
+  }
+  // TinyXML and urdfdom read the text up to its first NUL byte: what follows would be lost.
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+    const programs::TextPosition at = programs::positionOf(text, nul);
+    throw UrdfError(source + ": not XML: a NUL byte at line " + std::to_string(at.line) +
+                    ", column " + std::to_string(at.column) + " (XML text has none)");
   }
   document.Parse(text.c_str());
   if (!document.Error()) return;

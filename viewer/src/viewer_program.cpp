@@ -5,6 +5,7 @@
 #include <mutex>
 
 #include "lcmtf/buffer.hpp"
+#include "lcmtf/printable.hpp"
 #include "lcmtf/programs/command_line.hpp"
 #include "lcmtf/programs/lcm_connection.hpp"
 #include "lcmtf/programs/program_authority.hpp"
@@ -154,7 +155,7 @@ int runViewer(const ViewerOptions& options, std::ostream& out, std::ostream& err
   std::mutex err_mutex;
   auto report = [&](const std::string& message) {
     std::lock_guard<std::mutex> lock(err_mutex);
-    err << kProgram << ": " << message << std::endl;
+    err << kProgram << ": " << terminalSafe(message) << std::endl;
   };
 
   const std::unique_ptr<lcm::LCM> lcm = programs::openLcmOrReport(options.lcm_url, kProgram, err);

@@ -10,6 +10,12 @@ namespace lcmtf {
 std::string printable(std::string_view text);
 /// The same, line by line: the newlines of a report are kept.
 std::string printableLines(std::string_view text);
+/// A program's message, which may quote a file or the network, made safe for a terminal
+/// without changing text that already is: control characters other than the newline (C0,
+/// DEL and C1) and malformed UTF-8 become \xNN (a code point's UTF-8 bytes for C1), while
+/// backslashes and well-formed UTF-8 stay, so parts already passed through printable() read the
+/// same.
+std::string terminalSafe(std::string_view text);
 /// `text` as a quoted Graphviz DOT string shown as it is: a newline becomes a line break, and
 /// control characters and malformed UTF-8 (Graphviz's renderers fail on it) become '?'.
 std::string dotQuoted(std::string_view text);
