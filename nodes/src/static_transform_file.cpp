@@ -7,12 +7,13 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include "lcmtf/programs/command_line.hpp"
-#include "lcmtf/programs/text_position.hpp"
+#include "lcmtf/programs/plain_text.hpp"
 
 namespace lcmtf::nodes {
 
@@ -90,8 +91,10 @@ const std::vector<std::string>& staticTransformFileKeys() {
 
 std::vector<StaticTransformSpec> parseStaticTransformYaml(const std::string& text,
                                                           const std::string& name) {
-  // yaml-cpp stops at a NUL byte with a misleading message ("unknown escape character").
-  if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+  // yaml-cpp stops at a NUL byte of UTF-8 text with a misleading message ("unknown escape
+  // character").
+  if (const std::size_t nul = text.find('\0');
+      nul != std::string::npos && !programs::isUtf16Or32(text)) {
     const programs::TextPosition at = programs::positionOf(text, nul);
     throw CommandLineError(name + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
                            ": not valid YAML: a NUL byte (YAML text has none)");

@@ -93,6 +93,29 @@ TEST(StaticTransformFile, NulByteIsRefusedAtItsPlace) {
             "mounts.yaml:2:15: not valid YAML: a NUL byte (YAML text has none)");
 }
 
+// As an editor may save it: each character two or four bytes, with or without a byte order mark.
+TEST(StaticTransformFile, Utf16AndUtf32FilesAreRead) {
+  const std::string ascii = "- {frame_id: base, child_frame_id: camera}\n";
+  const auto widened = [&](std::size_t width, bool big_endian, const std::string& mark) {
+    std::string text = mark;
+    for (const char c : ascii) {
+      std::string unit(width, '\0');
+      unit[big_endian ? width - 1 : 0] = c;
+      text += unit;
+    }
+    return text;
+  };
+  for (const std::string& text :
+       {widened(2, false, "\xFF\xFE"), widened(2, true, "\xFE\xFF"), widened(2, false, ""),
+        widened(2, true, ""), widened(4, false, std::string("\xFF\xFE\0\0", 4)),
+        widened(4, true, "")}) {
+    const auto specs = parseStaticTransformYaml(text, "wide.yaml");
+    ASSERT_EQ(specs.size(), 1u);
+    EXPECT_EQ(specs[0].frame_id, "base");
+    EXPECT_EQ(specs[0].child_frame_id, "camera");
+  }
+}
+
 TEST(StaticTransformFile, ShapesOtherThanAListOfMapsAreRefused) {
   EXPECT_THAT(refusal(""), HasSubstr("expected a non-empty list of transforms"));
   EXPECT_THAT(refusal("transforms: []\n"), HasSubstr("expected a non-empty list of transforms"));

@@ -220,6 +220,14 @@ TEST(RobotModel, NulByteIsRefusedAtItsPlaceRatherThanEndingTheText) {
             "test.urdf: not XML: a NUL byte at line 2, column 6 (XML text has none)");
 }
 
+TEST(RobotModel, Utf16IsRefusedAskingForUtf8) {
+  const std::string refused =
+      "test.urdf: the text is UTF-16 or UTF-32, which TinyXML cannot read; save the URDF as UTF-8";
+  EXPECT_EQ(refusal(std::string("\xFF\xFE<\0r\0o\0", 8)), refused);
+  EXPECT_EQ(refusal(std::string("<\0r\0o\0", 6)), refused);
+  EXPECT_EQ(refusal(std::string("\0<\0r", 4)), refused);
+}
+
 TEST(RobotModel, TwoRootsAreRefused) {
   EXPECT_THAT(refusal("<robot name='r'><link name='a'/><link name='b'/></robot>"),
               HasSubstr("test.urdf: invalid URDF: Failed to find root link: Two root links found"));

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "joint_loops.hpp"
+#include "lcmtf/programs/plain_text.hpp"
 #include "lcmtf_urdf/description_limits.hpp"
 #include "lcmtf_urdf/robot_model.hpp"
 #include "xml_syntax.hpp"
@@ -36,6 +37,10 @@ std::mutex& consoleBridgeMutex() {
                                                  const std::string& source) {
   if (urdf.find_first_not_of(" \t\r\n") == std::string::npos) {
     throw UrdfError(source + ": the robot description is empty");
+  }
+  if (programs::isUtf16Or32(urdf)) {
+    throw UrdfError(source + ": the text is UTF-16 or UTF-32, which TinyXML cannot read; " +
+                    "save the URDF as UTF-8");
   }
   refuseOversizedDescription(urdf, source);
   TiXmlDocument document;

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "lcmtf/printable.hpp"
-#include "lcmtf/programs/text_position.hpp"
+#include "lcmtf/programs/plain_text.hpp"
 #include "lcmtf_urdf/robot_model.hpp"
 
 namespace lcmtf::urdf {

@@ -1,5 +1,7 @@
 #pragma once
 
+// What a program can tell of a file's text before a parser reads it.
+
 #include <algorithm>
 #include <cstddef>
 #include <string_view>
@@ -19,6 +21,14 @@ inline TextPosition positionOf(std::string_view text, std::size_t offset) {
   return TextPosition{
       1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n')),
       1 + (line_start == std::string_view::npos ? offset : offset - line_start - 1)};
+}
+
+/// YAML's test of a text's first bytes for UTF-16 or UTF-32 rather than UTF-8: a byte order
+/// mark, or a NUL among the first two bytes (the text then starts with an ASCII character).
+inline bool isUtf16Or32(std::string_view text) {
+  if (text.size() < 2) return false;
+  const std::string_view first_two = text.substr(0, 2);
+  return first_two == "\xFE\xFF" || first_two == "\xFF\xFE" || text[0] == '\0' || text[1] == '\0';
 }
 
 }  // namespace lcmtf::programs
