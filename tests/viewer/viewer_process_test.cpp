@@ -174,6 +174,19 @@ TEST_F(ViewerProcess, ABrokenUrdfFileExitsTwoNamingIt) {
   EXPECT_NE(viewer.stderrText().find(broken.string()), std::string::npos) << viewer.stderrText();
 }
 
+TEST_F(ViewerProcess, ControlCharactersOfARefusedRobotReachTheTerminalEscaped) {
+  const std::filesystem::path refused = web_root_ / "zero_axis.urdf";
+  std::ofstream(refused) << "<robot name='x'><link name='a'/><link name='b'/>"
+                            "<joint name='j&#x1b;[2J' type='continuous'><parent link='a'/>"
+                            "<child link='b'/><axis xyz='0 0 0'/></joint></robot>";
+  ChildProcess viewer(LCMTF_VIEWER_PATH, {"--port", "0", "--lcm-url", url_, "--web-root",
+                                          web_root_.string(), "--urdf", refused.string()});
+  EXPECT_EQ(viewer.waitForExit(10s), std::optional<int>(2));
+  EXPECT_NE(viewer.stderrText().find("joint 'j\\x1b[2J' has a zero axis"), std::string::npos)
+      << viewer.stderrText();
+  EXPECT_EQ(viewer.stderrText().find('\x1b'), std::string::npos);
+}
+
 TEST_F(ViewerProcess, APortInUseIsSaidPlainly) {
   auto first = startViewer();
   ChildProcess second(LCMTF_VIEWER_PATH, {"--port", std::to_string(port_), "--lcm-url", url_,
