@@ -11,8 +11,8 @@ std::string printable(std::string_view text);
 /// The same, line by line: the newlines of a report are kept.
 std::string printableLines(std::string_view text);
 /// A program's message, which may quote a file or the network, made safe for a terminal
-/// without changing text that already is: control characters other than the newline (C0,
-/// DEL and C1) and malformed UTF-8 become \xNN (a code point's UTF-8 bytes for C1), while
+/// without changing text that already is: each byte of a control character other than the
+/// newline (C0, DEL, and C1 in its two UTF-8 bytes) and of malformed UTF-8 becomes \xNN, while
 /// backslashes and well-formed UTF-8 stay, so parts already passed through printable() read the
 /// same.
 std::string terminalSafe(std::string_view text);
