@@ -3,18 +3,16 @@
 // Any crash, sanitizer report or escaped exception is a bug; so is a message let through beyond
 // the limits, a refusal that echoes more than a short slice of what was sent, or one that the
 // error message to the page cannot carry as JSON.
-#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <string_view>
 #include <variant>
 
 #include <nlohmann/json.hpp>
 
+#include "fuzz_check.hpp"
 #include "lcmtf_viewer/host_policy.hpp"
 #include "lcmtf_viewer/page_messages.hpp"
 #include "lcmtf_viewer/viewer_messages.hpp"
@@ -22,15 +20,10 @@
 namespace {
 
 using lcmtf::viewer::PageMessage;
+using lcmtf_fuzz::fail;
 
 // A refusal names the field and at most 64 bytes of a name or type the page sent.
 constexpr std::size_t kLongestRefusal = 200;
-
-[[noreturn]] void fail(const char* what, std::string_view detail) {
-  const int shown = static_cast<int>(std::min<std::size_t>(detail.size(), 300));
-  std::fprintf(stderr, "%s: %.*s\n", what, shown, detail.data());
-  std::abort();
-}
 
 void checkWithinLimits(const PageMessage& message) {
   if (const auto* view = std::get_if<lcmtf::viewer::ViewMessage>(&message)) {

@@ -9,27 +9,24 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "fuzz_check.hpp"
 #include "lcmtf/nodes/static_transform_file.hpp"
 #include "lcmtf/nodes/static_transform_spec.hpp"
 #include "lcmtf/printable.hpp"
 #include "lcmtf/programs/command_line.hpp"
+#include "lcmtf/programs/roll_pitch_yaw.hpp"
 
 namespace {
 
 using lcmtf::nodes::StaticTransformSpec;
+using lcmtf_fuzz::fail;
 
 constexpr const char* kFileName = "fuzz.yaml";
-
-[[noreturn]] void fail(const char* what, std::string_view detail) {
-  const std::string shown = lcmtf::printable(detail.substr(0, 300));
-  std::fprintf(stderr, "%s: %s\n", what, shown.c_str());
-  std::abort();
-}
 
 std::string number(double value) {
   char text[32];
@@ -44,8 +41,9 @@ std::string written(const std::vector<StaticTransformSpec>& specs) {
     text += "- {frame_id: " + lcmtf::yamlQuoted(spec.frame_id) +
             ", child_frame_id: " + lcmtf::yamlQuoted(spec.child_frame_id);
     const char* const axes[] = {"x", "y", "z"};
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 3; ++i) {
       text += std::string(", ") + axes[i] + ": " + number(spec.translation[i]);
+    }
     if (spec.quaternion_xyzw) {
       const char* const keys[] = {"qx", "qy", "qz", "qw"};
       for (int i = 0; i < 4; ++i) {
@@ -71,20 +69,20 @@ bool sameName(const std::string& read_back, const std::string& original, bool ex
                                [](char c) { return static_cast<unsigned char>(c) >= 0x80; });
 }
 
+bool sameAngles(const std::optional<lcmtf::programs::RollPitchYaw>& a,
+                const std::optional<lcmtf::programs::RollPitchYaw>& b) {
+  if (!a || !b) return a.has_value() == b.has_value();
+  return a->roll == b->roll && a->pitch == b->pitch && a->yaw == b->yaw;
+}
+
 bool sameSpecs(const std::vector<StaticTransformSpec>& a, const std::vector<StaticTransformSpec>& b,
                bool exact_names) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    const bool same_rotation =
-        a[i].quaternion_xyzw.has_value() == b[i].quaternion_xyzw.has_value() &&
-        (!a[i].quaternion_xyzw || *a[i].quaternion_xyzw == *b[i].quaternion_xyzw) &&
-        a[i].roll_pitch_yaw.has_value() == b[i].roll_pitch_yaw.has_value() &&
-        (!a[i].roll_pitch_yaw || (a[i].roll_pitch_yaw->roll == b[i].roll_pitch_yaw->roll &&
-                                  a[i].roll_pitch_yaw->pitch == b[i].roll_pitch_yaw->pitch &&
-                                  a[i].roll_pitch_yaw->yaw == b[i].roll_pitch_yaw->yaw));
     if (!sameName(b[i].frame_id, a[i].frame_id, exact_names) ||
         !sameName(b[i].child_frame_id, a[i].child_frame_id, exact_names) ||
-        a[i].translation != b[i].translation || !same_rotation) {
+        a[i].translation != b[i].translation || a[i].quaternion_xyzw != b[i].quaternion_xyzw ||
+        !sameAngles(a[i].roll_pitch_yaw, b[i].roll_pitch_yaw)) {
       return false;
     }
   }
