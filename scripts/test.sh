@@ -18,7 +18,7 @@ ctest --test-dir build/release -j"$jobs" --output-on-failure
 cmake -S . -B build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLCMTF_SANITIZE=thread \
   -DLCMTF_BUILD_JAVA=OFF -DLCMTF_BUILD_EXAMPLES=OFF -DLCMTF_BUILD_BENCHMARKS=OFF
 cmake --build build/tsan -j"$jobs" --target buffer_core_concurrency_test buffer_core_realtime_test \
-  read_mostly_lock_test
+  read_mostly_lock_test transform_listener_test
 ctest --test-dir build/tsan -R "Concurrency|Realtime" --output-on-failure
 
 # One clang build serves the fuzzers and the unit tests under ASan+UBSan, at -O1 so that the

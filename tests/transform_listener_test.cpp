@@ -176,6 +176,132 @@ TEST(TransformListener, FloodOfNewFrameNamesStopsAtTheCap) {
   EXPECT_EQ(buffer.lookupTransform("map", "f3", kLatestTime).transform.translation.x(), 5.0);
 }
 
+// A batch too small to reach max_frames is stored without a look at its names; one that might
+// reach it is checked name by name, and one that fills the frames left exactly is whole.
+TEST(TransformListener, ABatchThatFillsTheFramesLeftExactlyIsStoredWhole) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;
+  ListenerOptions options;
+  options.max_frames = 10;
+  TransformListener listener(buffer, lcm, options);
+  std::vector<TransformStamped> pairs;
+  for (int i = 0; i < 5; ++i) {
+    pairs.push_back(edge("p" + std::to_string(i), "c" + std::to_string(i), 1'000'000));
+  }
+  receive(listener, "sender", 1, pairs, kTfChannel);
+  EXPECT_EQ(buffer.frameCount(), 10u);
+  EXPECT_EQ(listener.statistics().frame_limit, 0u);
+
+  receive(listener, "sender", 2,
+          {edge("p0", "c0", 2'000'000, 4.0), edge("p5", "c5", 2'000'000),
+           edge("c1", "c6", 2'000'000), edge("p1", "c1", 2'000'000, 6.0)},
+          kTfChannel);
+  EXPECT_EQ(buffer.frameCount(), 10u);
+  EXPECT_EQ(listener.statistics().frame_limit, 2u);
+  EXPECT_EQ(listener.statistics().transforms, 7u);
+  EXPECT_EQ(buffer.lookupTransform("p0", "c0", kLatestTime).transform.translation.x(), 4.0);
+  EXPECT_EQ(buffer.lookupTransform("p1", "c1", kLatestTime).transform.translation.x(), 6.0);
+  EXPECT_FALSE(buffer.frameExists("c6"));
+
+  // Six pairs of new frames are more than the ten left: the sixth is refused.
+  Buffer fresh;
+  TransformListener fresh_listener(fresh, lcm, options);
+  pairs.push_back(edge("p5", "c5", 1'000'000));
+  receive(fresh_listener, "sender", 1, pairs, kTfChannel);
+  EXPECT_EQ(fresh.frameCount(), 10u);
+  EXPECT_EQ(fresh_listener.statistics().frame_limit, 1u);
+  EXPECT_FALSE(fresh.frameExists("c5"));
+}
+
+// Batches of every size, one after another, as several publishers on one channel send them:
+// each is stored exactly, none keeping anything of a longer one before it.
+TEST(TransformListener, BatchesOfChangingSizesAreEachStoredExactly) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;
+  TransformListener listener(buffer, lcm);
+  std::int64_t sequence = 0;
+  std::size_t sent = 0;
+  for (int size : {5, 1, 3, 0, 2, 5}) {
+    ++sequence;
+    std::vector<TransformStamped> batch;
+    for (int i = 0; i < size; ++i) {
+      batch.push_back(edge("map", "frame_with_a_long_name_" + std::to_string(i),
+                           sequence * 1'000'000, 10.0 * static_cast<double>(sequence) + i));
+    }
+    receive(listener, "sender", sequence, batch, kTfChannel);
+    sent += batch.size();
+    for (int i = 0; i < size; ++i) {
+      EXPECT_EQ(buffer
+                    .lookupTransform("map", "frame_with_a_long_name_" + std::to_string(i),
+                                     fromUtime(sequence * 1'000'000))
+                    .transform.translation.x(),
+                10.0 * static_cast<double>(sequence) + i);
+    }
+  }
+  EXPECT_EQ(listener.statistics().transforms, sent);
+  EXPECT_EQ(listener.statistics().rejected_transforms, 0u);
+}
+
+// A request's callback runs inside the insert of the batch that decided it; one that hands the
+// listener another batch there gets that batch stored as well.
+TEST(TransformListener, ABatchHandedInFromARequestCallbackIsStoredToo) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;
+  TransformListener listener(buffer, lcm);
+  int calls = 0;
+  buffer.addTransformableRequest(
+      [&](TransformableRequestHandle, const std::string&, const std::string&, TimePoint,
+          TransformableResult result) {
+        ++calls;
+        EXPECT_EQ(result, TransformableResult::kAvailable);
+        receive(listener, "inner", 1, {edge("map", "marker", 1'000'000, 4.0)}, kTfChannel);
+      },
+      "map", "base", fromUtime(1'000'000));
+  receive(listener, "outer", 1,
+          {edge("map", "odom", 1'000'000, 2.0), edge("odom", "base", 1'000'000, 3.0)}, kTfChannel);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(buffer.lookupTransform("map", "base", kLatestTime).transform.translation.x(), 5.0);
+  EXPECT_EQ(buffer.lookupTransform("map", "marker", kLatestTime).transform.translation.x(), 4.0);
+  EXPECT_EQ(listener.statistics().messages, 2u);
+  EXPECT_EQ(listener.statistics().transforms, 3u);
+}
+
+// Messages handed to one listener from several threads at once (a replay beside the
+// listener's own handling) are each stored whole.
+TEST(TransformListenerConcurrency, MessagesHandedInFromSeveralThreadsAreEachStoredWhole) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;
+  TransformListener listener(buffer, lcm);
+  constexpr int kThreads = 3;
+  constexpr int kBatches = 300;
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&listener, t] {
+      const std::string sender = "sender_" + std::to_string(t);
+      for (int b = 1; b <= kBatches; ++b) {
+        std::vector<TransformStamped> batch;
+        for (int i = 0; i < 1 + b % 4; ++i) {
+          batch.push_back(edge(sender + "_root", sender + "_frame_" + std::to_string(i), b * 10'000,
+                               static_cast<double>(b)));
+        }
+        receive(listener, sender, b, batch, kTfChannel);
+      }
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  std::size_t expected = 0;
+  for (int b = 1; b <= kBatches; ++b) expected += static_cast<std::size_t>(kThreads * (1 + b % 4));
+  EXPECT_EQ(listener.statistics().transforms, expected);
+  EXPECT_EQ(listener.statistics().messages, static_cast<std::uint64_t>(kThreads * kBatches));
+  for (int t = 0; t < kThreads; ++t) {
+    const std::string sender = "sender_" + std::to_string(t);
+    EXPECT_EQ(
+        buffer.lookupTransform(sender + "_root", sender + "_frame_0", fromUtime(kBatches * 10'000))
+            .transform.translation.x(),
+        static_cast<double>(kBatches));
+  }
+}
+
 TEST(TransformListener, SingleStalePacketIsDroppedButASustainedJumpBackResetsHistory) {
   lcm::LCM lcm("memq://");
   Buffer buffer(std::chrono::seconds(1));
@@ -480,8 +606,9 @@ TEST(TransformListener, AMaximumInterpolationGapMakesLookupsAcrossLostBatchesFai
         {edge("odom", "base", utime, static_cast<double>(utime) * 1e-6)}));
   }
   drain(lcm);
-  EXPECT_NEAR(buffer.lookupTransform("odom", "base", fromUtime(1'005'000)).transform.translation.x(),
-              1.005, 1e-9);
+  EXPECT_NEAR(
+      buffer.lookupTransform("odom", "base", fromUtime(1'005'000)).transform.translation.x(), 1.005,
+      1e-9);
   EXPECT_THROW(buffer.lookupTransform("odom", "base", fromUtime(1'500'000)),
                InterpolationGapException);
 }

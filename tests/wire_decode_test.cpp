@@ -193,6 +193,36 @@ TEST(WireDecode, AReusedMessageKeepsNothingOfThePreviousOneWhereTheNewOneIsEmpty
   EXPECT_TRUE(batch.transforms.empty());
 }
 
+TEST(WireDecode, AReusedMessageHoldsExactlyTheNewOne) {
+  tf_message_t batch;
+  tf_message_t long_names = lcmtf_test::sampleTfMessage(3);
+  for (transform_t& t : long_names.transforms) {
+    t.parent_frame += "_with_a_name_longer_than_the_next_one";
+    t.child_frame += "_with_a_name_longer_than_the_next_one";
+  }
+  const std::vector<std::uint8_t> three = encode(long_names);
+  ASSERT_TRUE(decodeMessage(three.data(), three.size(), batch).ok);
+  tf_message_t two = lcmtf_test::sampleTfMessage(2);
+  two.authority = "a";
+  const std::vector<std::uint8_t> bytes = encode(two);
+  ASSERT_TRUE(decodeMessage(bytes.data(), bytes.size(), batch).ok);
+  lcmtf_test::expectEqual(batch, two);
+
+  joint_state_t state;
+  const std::vector<std::uint8_t> full = encode(lcmtf_test::sampleJointState());
+  ASSERT_TRUE(decodeMessage(full.data(), full.size(), state).ok);
+  joint_state_t fewer = lcmtf_test::sampleJointState();
+  fewer.name = {"knee"};
+  fewer.num_joints = 1;
+  fewer.position = {2.0};
+  fewer.num_positions = 1;
+  fewer.velocity.clear();
+  fewer.num_velocities = 0;
+  const std::vector<std::uint8_t> fewer_bytes = encode(fewer);
+  ASSERT_TRUE(decodeMessage(fewer_bytes.data(), fewer_bytes.size(), state).ok);
+  lcmtf_test::expectEqual(state, fewer);
+}
+
 // Random bytes behind a valid fingerprint, and random corruptions of valid messages: decoding
 // either succeeds or fails with a reason; it never crashes, hangs or allocates wildly.
 TEST(WireDecode, GarbageNeverCrashes) {

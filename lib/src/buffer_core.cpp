@@ -290,8 +290,14 @@ bool BufferCore::setTransform(const TransformStamped& transform, const std::stri
 std::size_t BufferCore::setTransforms(const std::vector<TransformStamped>& transforms,
                                       const std::string& authority, bool is_static,
                                       std::string* error) {
-  const std::size_t stored =
-      impl_->insert(transforms.data(), transforms.size(), authority, is_static, error);
+  return setTransforms(transforms.data(), transforms.size(), authority, is_static, error);
+}
+
+std::size_t BufferCore::setTransforms(const TransformStamped* transforms, std::size_t count,
+                                      const std::string& authority, bool is_static,
+                                      std::string* error) {
+  if (count == 0) return 0;
+  const std::size_t stored = impl_->insert(transforms, count, authority, is_static, error);
   if (stored > 0) impl_->notifyDecidedRequests();
   return stored;
 }

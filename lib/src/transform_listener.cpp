@@ -23,14 +23,55 @@ constexpr int kStaleBatchesBeforeReset = 3;
 // Senders whose first reset is reported; later ones are only counted.
 constexpr std::size_t kResetsReported = 10;
 
+// Transforms a listener keeps room for between messages, in the message decoded and in the
+// batch it stores.
+constexpr std::size_t kLargestBatchKept = 1024;
+
 }  // namespace
+
+struct TransformListener::Scratch {
+  tf_message_t batch;
+  std::vector<TransformStamped> accepted;  // may hold more than one batch's: only grows
+};
+
+// The listener's scratch for one call, or scratch of the call's own when another call holds
+// it: one on another thread, or the call whose insert ran a request's callback that calls in.
+class TransformListener::ScratchLease {
+ public:
+  explicit ScratchLease(TransformListener& listener)
+      : listener_(listener),
+        shared_(!listener.scratch_taken_.exchange(true, std::memory_order_acquire)) {
+    if (!shared_) own_ = std::make_unique<Scratch>();
+  }
+  ~ScratchLease() {
+    if (!shared_) return;
+    // A batch far larger than robots send (a peer may send 65,536 transforms) leaves no room
+    // behind: the room kept is what the batches of a robot's publishers need.
+    Scratch& scratch = *listener_.scratch_;
+    if (scratch.batch.transforms.capacity() > kLargestBatchKept ||
+        scratch.accepted.capacity() > kLargestBatchKept) {
+      scratch = Scratch{};
+    }
+    listener_.scratch_taken_.store(false, std::memory_order_release);
+  }
+  ScratchLease(const ScratchLease&) = delete;
+  ScratchLease& operator=(const ScratchLease&) = delete;
+
+  Scratch& scratch() { return shared_ ? *listener_.scratch_ : *own_; }
+
+ private:
+  TransformListener& listener_;
+  const bool shared_;
+  std::unique_ptr<Scratch> own_;
+};
 
 TransformListener::TransformListener(Buffer& buffer, ListenerOptions options)
     : buffer_(buffer),
       options_(std::move(options)),
       owned_lcm_(detail::openLcm(options_.lcm_url)),
       lcm_(*owned_lcm_),
-      authorities_(std::make_unique<detail::ListenerAuthorities>(options_.max_authorities)) {
+      authorities_(std::make_unique<detail::ListenerAuthorities>(options_.max_authorities)),
+      scratch_(std::make_unique<Scratch>()) {
   subscribe();
   thread_ = std::thread([this] {
     while (!stopping_) lcm_.handleTimeout(50);
@@ -41,7 +82,8 @@ TransformListener::TransformListener(Buffer& buffer, lcm::LCM& lcm, ListenerOpti
     : buffer_(buffer),
       options_(std::move(options)),
       lcm_(lcm),
-      authorities_(std::make_unique<detail::ListenerAuthorities>(options_.max_authorities)) {
+      authorities_(std::make_unique<detail::ListenerAuthorities>(options_.max_authorities)),
+      scratch_(std::make_unique<Scratch>()) {
   if (!lcm_.good()) throw std::runtime_error("TransformListener: the LCM given is not usable");
   subscribe();
 }
@@ -122,15 +164,16 @@ void TransformListener::onMessage(const lcm::ReceiveBuffer* buffer, const std::s
 
 void TransformListener::handleMessage(const void* data, std::size_t size,
                                       const std::string& channel) {
-  tf_message_t batch;
-  const DecodeResult decoded = decodeMessage(data, size, batch, options_.limits);
+  ScratchLease lease(*this);
+  Scratch& scratch = lease.scratch();
+  const DecodeResult decoded = decodeMessage(data, size, scratch.batch, options_.limits);
   if (!decoded.ok) {
     std::lock_guard<std::mutex> guard(mutex_);
     ++statistics_.malformed;
     report("malformed", "ignored a malformed message on " + channel + ": " + decoded.error);
     return;
   }
-  handleBatch(batch, channel == options_.static_channel);
+  handleBatch(scratch.batch, channel == options_.static_channel, scratch.accepted);
 }
 
 bool TransformListener::allowed(const std::string& authority) const {
@@ -225,7 +268,40 @@ void TransformListener::restartHistory(const tf_message_t& batch, std::int64_t b
                                            : "")));
 }
 
-void TransformListener::handleBatch(const tf_message_t& batch, bool is_static) {
+namespace {
+
+// `out` becomes `message`, in the room its strings already have.
+void assignFromMessage(const transform_t& message, TransformStamped& out) {
+  out.stamp = fromUtime(message.utime);
+  out.parent_frame.assign(message.parent_frame);
+  out.child_frame.assign(message.child_frame);
+  out.transform = Transform(fromMessage(message.translation), fromMessage(message.rotation));
+}
+
+}  // namespace
+
+// Whether the frames `message` names that the buffer has not seen (nor `added`, those of the
+// batch so far) fit under max_frames beside `frames`; if so, they join both.
+bool TransformListener::admitNewFrames(const transform_t& message, std::size_t& frames,
+                                       std::set<std::string>& added) const {
+  auto isNew = [&](const std::string& name) {
+    const std::string bare(canonicalFrameName(name));
+    return !added.count(bare) && !buffer_.frameExists(bare);
+  };
+  const bool new_child = isNew(message.child_frame);
+  const bool new_parent =
+      message.parent_frame != message.child_frame && isNew(message.parent_frame);
+  const std::size_t new_frames = std::size_t{new_child} + std::size_t{new_parent};
+  if (new_frames > 0 && frames + new_frames > options_.max_frames) return false;
+  frames += new_frames;
+  for (const std::string* name : {&message.child_frame, &message.parent_frame}) {
+    added.insert(std::string(canonicalFrameName(*name)));
+  }
+  return true;
+}
+
+void TransformListener::handleBatch(const tf_message_t& batch, bool is_static,
+                                    std::vector<TransformStamped>& accepted) {
   std::unique_lock<std::mutex> lock(mutex_);
   if (!allowed(batch.authority)) {
     ++statistics_.unauthorized;
@@ -235,41 +311,32 @@ void TransformListener::handleBatch(const tf_message_t& batch, bool is_static) {
   }
   detail::HeardAuthority& sender = hear(batch, is_static);
   if (!is_static && isStale(batch, sender)) return;
-  // Frames this batch would add, so that the limit holds for the batch as a whole.
+  // Each transform adds two frames at most, so a batch that cannot reach the limit, as nearly
+  // every batch of a running robot, needs no look at its names.
   std::size_t frames = buffer_.frameCount();
+  const std::size_t room = options_.max_frames - std::min(frames, options_.max_frames);
+  const bool may_reach_limit = batch.transforms.size() > room / 2;
   std::set<std::string> added;
-  auto isNew = [&](const std::string& name) {
-    const std::string bare(canonicalFrameName(name));
-    return !added.count(bare) && !buffer_.frameExists(bare);
-  };
-  std::vector<TransformStamped> accepted;
-  accepted.reserve(batch.transforms.size());
+  if (accepted.size() < batch.transforms.size()) accepted.resize(batch.transforms.size());
+  std::size_t count = 0;
   for (const transform_t& message : batch.transforms) {
-    TransformStamped transform = fromMessage(message);
-    const bool new_child = isNew(transform.child_frame);
-    const bool new_parent =
-        transform.parent_frame != transform.child_frame && isNew(transform.parent_frame);
-    const std::size_t new_frames = std::size_t{new_child} + std::size_t{new_parent};
-    if (new_frames > 0 && frames + new_frames > options_.max_frames) {
+    if (may_reach_limit && !admitNewFrames(message, frames, added)) {
       ++statistics_.frame_limit;
       report("frame_limit", "refused new frames beyond the limit of " +
                                 std::to_string(options_.max_frames) + " (first: '" +
-                                transform.parent_frame + "' -> '" + transform.child_frame +
-                                "' from '" + batch.authority + "')");
+                                message.parent_frame + "' -> '" + message.child_frame + "' from '" +
+                                batch.authority + "')");
       continue;
     }
-    frames += new_frames;
-    for (const std::string* name : {&transform.child_frame, &transform.parent_frame}) {
-      added.insert(std::string(canonicalFrameName(*name)));
-    }
-    accepted.push_back(std::move(transform));
+    assignFromMessage(message, accepted[count++]);
   }
   // Not under the listener's lock: inserting runs the callbacks of requests it decides.
   lock.unlock();
-  const std::size_t stored = buffer_.setTransforms(accepted, batch.authority, is_static);
+  const std::size_t stored =
+      buffer_.setTransforms(accepted.data(), count, batch.authority, is_static);
   lock.lock();
   statistics_.transforms += stored;
-  statistics_.rejected_transforms += accepted.size() - stored;
+  statistics_.rejected_transforms += count - stored;
   ++statistics_.messages;
 }
 

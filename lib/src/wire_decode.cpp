@@ -173,17 +173,21 @@ bool skimBody(WireSkimmer& wire, const robot_description_t*) {
 }
 
 // LCM's generated decode resizes an array only when its count is non-zero, so decoding into a
-// reused message would keep the previous message's elements wherever this one has none.
-void emptyArrays(tf_message_t& message) { message.transforms.clear(); }
-void emptyArrays(joint_state_t& message) {
-  message.name.clear();
-  message.position.clear();
-  message.velocity.clear();
-  message.effort.clear();
+// reused message would keep the previous message's elements wherever this one has none. Sized
+// after the decode rather than emptied before it, a reused message keeps its elements' strings,
+// whose room the next message's names then fill without allocating.
+void sizeArrays(tf_message_t& message) {
+  message.transforms.resize(static_cast<std::size_t>(message.num_transforms));
 }
-void emptyArrays(transform_t&) {}
-void emptyArrays(resend_request_t&) {}
-void emptyArrays(robot_description_t&) {}
+void sizeArrays(joint_state_t& message) {
+  message.name.resize(static_cast<std::size_t>(message.num_joints));
+  message.position.resize(static_cast<std::size_t>(message.num_positions));
+  message.velocity.resize(static_cast<std::size_t>(message.num_velocities));
+  message.effort.resize(static_cast<std::size_t>(message.num_efforts));
+}
+void sizeArrays(transform_t&) {}
+void sizeArrays(resend_request_t&) {}
+void sizeArrays(robot_description_t&) {}
 
 std::string hex(std::int64_t value) {
   char text[24];
@@ -227,13 +231,13 @@ DecodeResult decodeMessage(const void* data, std::size_t size, Message& out,
                    " unexpected bytes after the end of the message";
     return result;
   }
-  emptyArrays(out);
   try {
     const int decoded = out.decode(data, 0, static_cast<int>(size));
     if (decoded != static_cast<int>(size)) {
       result.error = type + ": LCM decode failed (returned " + std::to_string(decoded) + ")";
       return result;
     }
+    sizeArrays(out);
   } catch (const std::exception& e) {
     result.error = type + ": LCM decode failed: " + e.what();
     return result;

@@ -57,6 +57,10 @@ class BufferCore {
   std::size_t setTransforms(const std::vector<TransformStamped>& transforms,
                             const std::string& authority, bool is_static = false,
                             std::string* error = nullptr);
+  /// setTransforms for the `count` transforms from `transforms` on.
+  std::size_t setTransforms(const TransformStamped* transforms, std::size_t count,
+                            const std::string& authority, bool is_static = false,
+                            std::string* error = nullptr);
 
   /// target_T_source at `time` (kLatestTime: the latest time every edge on the path has data).
   /// Throws LookupException, ConnectivityException, ExtrapolationException,

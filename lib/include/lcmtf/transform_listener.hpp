@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -114,8 +115,13 @@ class TransformListener {
  private:
   void subscribe();
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel);
-  void handleBatch(const tf_message_t& batch, bool is_static);
+  struct Scratch;
+  class ScratchLease;
+  void handleBatch(const tf_message_t& batch, bool is_static,
+                   std::vector<TransformStamped>& accepted);
   bool allowed(const std::string& authority) const;
+  bool admitNewFrames(const transform_t& message, std::size_t& frames,
+                      std::set<std::string>& added) const;
   detail::HeardAuthority& hear(const tf_message_t& batch, bool is_static);
   bool isStale(const tf_message_t& batch, detail::HeardAuthority& sender);
   void restartHistory(const tf_message_t& batch, std::int64_t batch_newest,
@@ -136,6 +142,11 @@ class TransformListener {
   bool heard_dynamic_ = false;
   std::size_t resets_reported_ = 0;
   std::map<std::string, bool> reported_;
+
+  // What handling a message decodes into, kept from one message to the next so that a stream
+  // of batches reuses its strings and arrays; taken by one call at a time (ScratchLease).
+  std::unique_ptr<Scratch> scratch_;
+  std::atomic<bool> scratch_taken_{false};
 
   std::atomic<bool> stopping_{false};
   std::thread thread_;

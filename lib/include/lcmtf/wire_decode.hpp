@@ -27,6 +27,8 @@ struct DecodeResult {
 /// Decodes LCM bytes into `out` without trusting any length or count they carry: a wrong
 /// fingerprint, truncation, a bad string or an absurd count fails with a reason instead.
 /// Defined for transform_t, tf_message_t, joint_state_t, resend_request_t, robot_description_t.
+/// `out` may be reused from one message to the next: it then holds exactly the new message,
+/// with no allocation where its strings and arrays already have room.
 template <class Message>
 DecodeResult decodeMessage(const void* data, std::size_t size, Message& out,
                            const DecodeLimits& limits = {});
