@@ -2,10 +2,13 @@
 // query on whatever got in. Any crash, sanitizer report or escaped exception is a bug.
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
+#include <vector>
 
 #include <lcm/lcm-cpp.hpp>
 
+#include "fuzz_check.hpp"
 #include "lcmtf/transform_listener.hpp"
 #include "lookup_mode.hpp"
 
@@ -36,6 +39,31 @@ void queryEverything(const lcmtf::Buffer& buffer) {
   buffer.allFramesAsDot();
 }
 
+// lcmtf reads a tf_message_t itself, in one pass with its checks: what it accepts must be what
+// LCM's generated decode makes of the same bytes, and encode back to them.
+void checkDecodeAgreesWithLcm(const std::uint8_t* data, std::size_t size) {
+  lcmtf::tf_message_t ours;
+  if (!lcmtf::decodeMessage(data, size, ours).ok) return;
+  lcmtf::tf_message_t theirs;
+  if (theirs.decode(data, 0, static_cast<int>(size)) != static_cast<int>(size)) {
+    lcmtf_fuzz::fail("accepted bytes LCM's decode refuses",
+                     std::string(reinterpret_cast<const char*>(data), size));
+  }
+  std::vector<std::uint8_t> again(size);
+  if (ours.getEncodedSize() != static_cast<int>(size) ||
+      ours.encode(again.data(), 0, static_cast<int>(size)) != static_cast<int>(size) ||
+      std::memcmp(again.data(), data, size) != 0) {
+    lcmtf_fuzz::fail("decoded bytes that do not encode back to themselves",
+                     std::string(reinterpret_cast<const char*>(data), size));
+  }
+  std::vector<std::uint8_t> theirs_again(size);
+  theirs.encode(theirs_again.data(), 0, static_cast<int>(size));
+  if (theirs_again != again) {
+    lcmtf_fuzz::fail("decoded otherwise than LCM's decode",
+                     std::string(reinterpret_cast<const char*>(data), size));
+  }
+}
+
 }  // namespace
 
 // Quick lookups are not checked against the walk here: the fuzzer's absurd magnitudes (1e300
@@ -60,6 +88,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::size_t i = 0; i < messages; ++i) {
     const std::uint8_t* message = data + 1 + i * chunk;
     const std::size_t length = i + 1 == messages ? size - 1 - i * chunk : chunk;
+    checkDecodeAgreesWithLcm(message, length);
     listener.handleMessage(message, length, (data[0] >> (2 + i)) & 1 ? "TF_STATIC" : "TF");
     lcmtf::joint_state_t joints;
     lcmtf::decodeMessage(message, length, joints);

@@ -28,7 +28,8 @@ struct DecodeResult {
 /// fingerprint, truncation, a bad string or an absurd count fails with a reason instead.
 /// Defined for transform_t, tf_message_t, joint_state_t, resend_request_t, robot_description_t.
 /// `out` may be reused from one message to the next: it then holds exactly the new message,
-/// with no allocation where its strings and arrays already have room.
+/// with no allocation where its strings and arrays already have room. After a failure it holds
+/// whatever was read before the fault.
 template <class Message>
 DecodeResult decodeMessage(const void* data, std::size_t size, Message& out,
                            const DecodeLimits& limits = {});
