@@ -171,8 +171,12 @@ void measure(const bench::Workload& w, const Options& options) {
   ways.push_back(&tf2_store);
 #endif
   // Static edges once, then every dynamic edge's history filled.
-  for (const bench::Edge& edge : w.edges) {
+  for (std::size_t index = 0; index < w.edges.size(); ++index) {
+    const bench::Edge& edge = w.edges[index];
     if (edge.dynamic) continue;
+#ifdef LCMTF_BENCH_WITH_TF2
+    tf2.set(index, 0, edge.samples[0], true);
+#endif
     const bench::Pose& p = edge.samples[0];
     const lcmtf::TransformStamped fixed{
         lcmtf::TimePoint{}, w.names[edge.parent], w.names[edge.child],
