@@ -109,7 +109,8 @@ class TransformListener {
   /// be destroyed from another thread, as its destructor waits for that one to end.
   bool onItsThread() const { return std::this_thread::get_id() == thread_.get_id(); }
 
-  /// Handles one encoded tf_message_t as if it had arrived on `channel` (replay, tests).
+  /// Handles one encoded tf_message_t as if it had arrived on `channel` (replay, tests); from
+  /// any thread, beside the listener's own handling.
   void handleMessage(const void* data, std::size_t size, const std::string& channel);
 
  private:
