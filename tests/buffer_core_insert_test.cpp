@@ -666,6 +666,21 @@ TEST(BufferCoreBatchInsert, StoresTheGoodTransformsAndCountsTheBadOnes) {
                                       1e-12));
 }
 
+TEST(BufferCoreBatchInsert, TakesTheCountGivenFromAnArray) {
+  BufferCore buffer;
+  const TransformStamped batch[] = {
+      stamped("map", "odom", at(1), pose(Eigen::Vector3d(1, 0, 0), 0.0, Eigen::Vector3d::UnitZ())),
+      stamped("odom", "base", at(1), pose(Eigen::Vector3d(0, 2, 0), 0.0, Eigen::Vector3d::UnitZ())),
+      stamped("base", "camera", at(1),
+              pose(Eigen::Vector3d(0, 0, 3), 0.0, Eigen::Vector3d::UnitZ()))};
+  EXPECT_EQ(buffer.setTransforms(batch, 0, "batcher"), 0u);
+  EXPECT_EQ(buffer.frameCount(), 0u);
+  EXPECT_EQ(buffer.setTransforms(batch, 2, "batcher"), 2u);
+  EXPECT_EQ(buffer.statistics().inserted, 2u);
+  EXPECT_TRUE(buffer.frameExists("base"));
+  EXPECT_FALSE(buffer.frameExists("camera"));
+}
+
 TEST(BufferCoreBatchInsert, DecidesPendingRequestsOnceTheWholeBatchIsIn) {
   BufferCore buffer;
   int calls = 0;
