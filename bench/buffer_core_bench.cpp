@@ -84,14 +84,10 @@ void insertBench(benchmark::State& state, std::size_t shape) {
     cursor.dynamic = dynamicEdges(w);
     cursor.step = w.samples;
   }
-  // The poses cycle through each edge's first few, so that reading them costs the benchmark
-  // little beside the library's work, whatever the size of the workload.
-  constexpr std::size_t kPoses = 8;
   for (auto _ : state) {
     const std::size_t index = cursor.dynamic[cursor.position];
     const Edge& edge = w.edges[index];
-    cursor.subject->set(index, w.stamp(edge, cursor.step),
-                        edge.samples[cursor.step % std::min(kPoses, w.samples)]);
+    cursor.subject->set(index, w.stamp(edge, cursor.step), insertedPose(edge, cursor.step));
     if (++cursor.position == cursor.dynamic.size()) {
       cursor.position = 0;
       ++cursor.step;

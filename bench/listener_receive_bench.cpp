@@ -49,9 +49,13 @@ bool parse(int argc, char** argv, Options& options) {
   return argc % 2 == 1;
 }
 
+lcmtf::Transform transformOf(const bench::Pose& p) {
+  return lcmtf::Transform(Eigen::Vector3d(p.x, p.y, p.z),
+                          Eigen::Quaterniond(p.qw, p.qx, p.qy, p.qz));
+}
+
 // A state publisher's batch for each step of the workload's motion: the step's sample of every
-// dynamic edge. Poses cycle through each edge's first few, as the insert rows of
-// buffer_core_bench do.
+// dynamic edge, with the poses the insert rows of buffer_core_bench give.
 class Publisher {
  public:
   explicit Publisher(const bench::Workload& w) : w_(w), dynamic_(bench::dynamicEdges(w)) {
@@ -65,13 +69,10 @@ class Publisher {
   std::size_t batchSize() const { return batch_.size(); }
 
   const std::vector<lcmtf::TransformStamped>& batch(std::size_t step) {
-    constexpr std::size_t kPoses = 8;
     for (std::size_t i = 0; i < dynamic_.size(); ++i) {
       const bench::Edge& edge = w_.edges[dynamic_[i]];
-      const bench::Pose& p = edge.samples[step % std::min(kPoses, w_.samples)];
       batch_[i].stamp = lcmtf::fromUtime(w_.stamp(edge, step));
-      batch_[i].transform = lcmtf::Transform(Eigen::Vector3d(p.x, p.y, p.z),
-                                             Eigen::Quaterniond(p.qw, p.qx, p.qy, p.qz));
+      batch_[i].transform = transformOf(bench::insertedPose(edge, step));
     }
     return batch_;
   }
@@ -164,8 +165,7 @@ void measure(const bench::Workload& w, const Options& options) {
                 [&] {
                   for (std::size_t index : dynamic) {
                     const bench::Edge& edge = w.edges[index];
-                    tf2.set(index, w.stamp(edge, tf2_step),
-                            edge.samples[tf2_step % std::min<std::size_t>(8, w.samples)]);
+                    tf2.set(index, w.stamp(edge, tf2_step), bench::insertedPose(edge, tf2_step));
                   }
                 }};
   ways.push_back(&tf2_store);
@@ -177,11 +177,8 @@ void measure(const bench::Workload& w, const Options& options) {
 #ifdef LCMTF_BENCH_WITH_TF2
     tf2.set(index, 0, edge.samples[0], true);
 #endif
-    const bench::Pose& p = edge.samples[0];
-    const lcmtf::TransformStamped fixed{
-        lcmtf::TimePoint{}, w.names[edge.parent], w.names[edge.child],
-        lcmtf::Transform(Eigen::Vector3d(p.x, p.y, p.z),
-                         Eigen::Quaterniond(p.qw, p.qx, p.qy, p.qz))};
+    const lcmtf::TransformStamped fixed{lcmtf::TimePoint{}, w.names[edge.parent],
+                                        w.names[edge.child], transformOf(edge.samples[0])};
     listened.setTransform(fixed, "static_publisher", true);
     stored.setTransform(fixed, "static_publisher", true);
   }

@@ -211,6 +211,14 @@ inline void buildQueries(Workload& w, std::mt19937_64& rng) {
 
 }  // namespace detail
 
+// The pose of a dynamic edge that inserts at `step` give: they cycle through each edge's first few,
+// so that reading them costs a benchmark little beside the library's work, whatever the size of the
+// workload.
+inline const Pose& insertedPose(const Edge& edge, std::size_t step) {
+  constexpr std::size_t kPoses = 8;
+  return edge.samples[step % std::min(kPoses, edge.samples.size())];
+}
+
 inline std::vector<std::size_t> dynamicEdges(const Workload& w) {
   std::vector<std::size_t> indices;
   for (std::size_t i = 0; i < w.edges.size(); ++i) {

@@ -29,6 +29,14 @@ TEST(MessageConversions, MessageRoundTripsThroughTransformStamped) {
   lcmtf_test::expectEqual(toMessage(fromMessage(original)), original);
 }
 
+TEST(MessageConversions, AMessageConvertedIntoAUsedTransformStampedReplacesAllOfIt) {
+  TransformStamped out = fromMessage(lcmtf_test::sampleTransform(7));
+  out.parent_frame += "_and_a_longer_name_than_the_next";
+  const transform_t next = lcmtf_test::sampleTransform(2);
+  fromMessage(next, out);
+  lcmtf_test::expectEqual(toMessage(out), next);
+}
+
 TEST(MessageConversions, QuaternionKeepsScalarPartInW) {
   quaternion_t message{};
   message.x = 0.1;

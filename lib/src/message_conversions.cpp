@@ -38,9 +38,16 @@ Eigen::Quaterniond fromMessage(const quaternion_t& rotation) {
 }
 
 TransformStamped fromMessage(const transform_t& transform) {
-  return TransformStamped{
-      fromUtime(transform.utime), transform.parent_frame, transform.child_frame,
-      Transform(fromMessage(transform.translation), fromMessage(transform.rotation))};
+  TransformStamped out;
+  fromMessage(transform, out);
+  return out;
+}
+
+void fromMessage(const transform_t& transform, TransformStamped& out) {
+  out.stamp = fromUtime(transform.utime);
+  out.parent_frame.assign(transform.parent_frame);
+  out.child_frame.assign(transform.child_frame);
+  out.transform = Transform(fromMessage(transform.translation), fromMessage(transform.rotation));
 }
 
 Eigen::Isometry3d toIsometry(const TransformStamped& transform) {

@@ -268,18 +268,6 @@ void TransformListener::restartHistory(const tf_message_t& batch, std::int64_t b
                                            : "")));
 }
 
-namespace {
-
-// `out` becomes `message`, in the room its strings already have.
-void assignFromMessage(const transform_t& message, TransformStamped& out) {
-  out.stamp = fromUtime(message.utime);
-  out.parent_frame.assign(message.parent_frame);
-  out.child_frame.assign(message.child_frame);
-  out.transform = Transform(fromMessage(message.translation), fromMessage(message.rotation));
-}
-
-}  // namespace
-
 // Whether the frames `message` names that the buffer has not seen (nor `added`, those of the
 // batch so far) fit under max_frames beside `frames`; if so, they join both.
 bool TransformListener::admitNewFrames(const transform_t& message, std::size_t& frames,
@@ -328,7 +316,7 @@ void TransformListener::handleBatch(const tf_message_t& batch, bool is_static,
                                 batch.authority + "')");
       continue;
     }
-    assignFromMessage(message, accepted[count++]);
+    fromMessage(message, accepted[count++]);
   }
   // Not under the listener's lock: inserting runs the callbacks of requests it decides.
   lock.unlock();

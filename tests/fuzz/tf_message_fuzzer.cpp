@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <lcm/lcm-cpp.hpp>
@@ -44,24 +45,20 @@ void queryEverything(const lcmtf::Buffer& buffer) {
 void checkDecodeAgreesWithLcm(const std::uint8_t* data, std::size_t size) {
   lcmtf::tf_message_t ours;
   if (!lcmtf::decodeMessage(data, size, ours).ok) return;
+  const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   lcmtf::tf_message_t theirs;
   if (theirs.decode(data, 0, static_cast<int>(size)) != static_cast<int>(size)) {
-    lcmtf_fuzz::fail("accepted bytes LCM's decode refuses",
-                     std::string(reinterpret_cast<const char*>(data), size));
+    lcmtf_fuzz::fail("accepted bytes LCM's decode refuses", bytes);
   }
   std::vector<std::uint8_t> again(size);
   if (ours.getEncodedSize() != static_cast<int>(size) ||
       ours.encode(again.data(), 0, static_cast<int>(size)) != static_cast<int>(size) ||
       std::memcmp(again.data(), data, size) != 0) {
-    lcmtf_fuzz::fail("decoded bytes that do not encode back to themselves",
-                     std::string(reinterpret_cast<const char*>(data), size));
+    lcmtf_fuzz::fail("decoded bytes that do not encode back to themselves", bytes);
   }
   std::vector<std::uint8_t> theirs_again(size);
   theirs.encode(theirs_again.data(), 0, static_cast<int>(size));
-  if (theirs_again != again) {
-    lcmtf_fuzz::fail("decoded otherwise than LCM's decode",
-                     std::string(reinterpret_cast<const char*>(data), size));
-  }
+  if (theirs_again != again) lcmtf_fuzz::fail("decoded otherwise than LCM's decode", bytes);
 }
 
 }  // namespace

@@ -19,6 +19,8 @@ transform_t toMessage(const TransformStamped& transform);
 Eigen::Vector3d fromMessage(const vector3_t& vector);
 Eigen::Quaterniond fromMessage(const quaternion_t& rotation);
 TransformStamped fromMessage(const transform_t& transform);
+/// fromMessage into `out`, in the room its strings already have (a receive loop reusing one).
+void fromMessage(const transform_t& transform, TransformStamped& out);
 
 /// parent_T_child as an Eigen isometry, from either form.
 Eigen::Isometry3d toIsometry(const TransformStamped& transform);
