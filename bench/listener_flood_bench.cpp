@@ -13,6 +13,8 @@
 
 #include "lcmtf/transform_broadcaster.hpp"
 #include "lcmtf/transform_listener.hpp"
+#include "positive_flags.hpp"
+#include "process_memory.hpp"
 
 namespace {
 
@@ -21,33 +23,6 @@ struct FloodOptions {
   int flood_rate = 15000;  // new authorities a second
   std::size_t name_bytes = 250;
 };
-
-bool parse(int argc, char** argv, FloodOptions& options) {
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const long value = std::strtol(argv[i + 1], nullptr, 10);
-    if (value <= 0) return false;
-    if (std::strcmp(argv[i], "--seconds") == 0) {
-      options.seconds = static_cast<int>(value);
-    } else if (std::strcmp(argv[i], "--flood-rate") == 0) {
-      options.flood_rate = static_cast<int>(value);
-    } else if (std::strcmp(argv[i], "--name-bytes") == 0) {
-      options.name_bytes = static_cast<std::size_t>(value);
-    } else {
-      return false;
-    }
-  }
-  return argc % 2 == 1;
-}
-
-// The figure from /proc/self/status for `field` (VmRSS: now, VmHWM: the peak), in MB.
-double memoryMegabytes(const char* field) {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line)) {
-    if (line.rfind(field, 0) == 0) return std::atof(line.c_str() + std::strlen(field) + 1) / 1024.0;
-  }
-  return -1.0;
-}
 
 std::string floodName(std::uint64_t n, std::size_t bytes) {
   std::string name = "flood_" + std::to_string(n) + "_";
@@ -65,7 +40,10 @@ lcmtf::TransformStamped sample(const char* parent, const char* child, double x) 
 
 int main(int argc, char** argv) {
   FloodOptions options;
-  if (!parse(argc, argv, options)) {
+  if (!bench::parsePositiveFlags(argc, argv,
+                                 {{"--seconds", bench::into(options.seconds)},
+                                  {"--flood-rate", bench::into(options.flood_rate)},
+                                  {"--name-bytes", bench::into(options.name_bytes)}})) {
     std::fprintf(stderr,
                  "usage: listener_flood_bench [--seconds N] [--flood-rate PER_SECOND] "
                  "[--name-bytes N]  (positive numbers)\n");
@@ -81,7 +59,7 @@ int main(int argc, char** argv) {
     while (!stop) lcm.handleTimeout(10);
   });
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  const double rss_before = memoryMegabytes("VmRSS:");
+  const double rss_before = bench::processMemoryMegabytes("VmRSS:");
 
   std::uint64_t good_sent = 0;
   std::uint64_t flood_sent = 0;
@@ -127,7 +105,7 @@ int main(int argc, char** argv) {
               options.seconds, static_cast<unsigned long long>(flood_sent), options.name_bytes,
               options.flood_rate);
   std::printf("RSS before %.1f MB, after %.1f MB, peak %.1f MB\n", rss_before,
-              memoryMegabytes("VmRSS:"), memoryMegabytes("VmHWM:"));
+              bench::processMemoryMegabytes("VmRSS:"), bench::processMemoryMegabytes("VmHWM:"));
   std::printf(
       "good batches stored %llu of %llu sent (%.2f %%); lost as counted by number %llu\n",
       static_cast<unsigned long long>(good_received), static_cast<unsigned long long>(good_sent),

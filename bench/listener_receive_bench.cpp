@@ -20,6 +20,7 @@
 #include "lcmtf/transform_broadcaster.hpp"
 #include "lcmtf/transform_listener.hpp"
 #include "lcmtf/wire_decode.hpp"
+#include "positive_flags.hpp"
 #include "tree_shapes.hpp"
 #ifdef LCMTF_BENCH_WITH_TF2
 #include "tf2_subject.hpp"
@@ -33,21 +34,6 @@ struct Options {
   int rounds = 9;
   int batches = 1000;  // per round
 };
-
-bool parse(int argc, char** argv, Options& options) {
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const long value = std::strtol(argv[i + 1], nullptr, 10);
-    if (value <= 0) return false;
-    if (std::strcmp(argv[i], "--rounds") == 0) {
-      options.rounds = static_cast<int>(value);
-    } else if (std::strcmp(argv[i], "--batches") == 0) {
-      options.batches = static_cast<int>(value);
-    } else {
-      return false;
-    }
-  }
-  return argc % 2 == 1;
-}
 
 lcmtf::Transform transformOf(const bench::Pose& p) {
   return lcmtf::Transform(Eigen::Vector3d(p.x, p.y, p.z),
@@ -202,7 +188,9 @@ void measure(const bench::Workload& w, const Options& options) {
 
 int main(int argc, char** argv) {
   Options options;
-  if (!parse(argc, argv, options)) {
+  if (!bench::parsePositiveFlags(argc, argv,
+                                 {{"--rounds", bench::into(options.rounds)},
+                                  {"--batches", bench::into(options.batches)}})) {
     std::fprintf(stderr, "usage: listener_receive_bench [--rounds N] [--batches N]\n");
     return 2;
   }

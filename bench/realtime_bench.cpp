@@ -15,14 +15,15 @@ int report(const char* name, lcmtf_bench::RealtimeThread realtime, int seconds) 
     std::printf("%-40s not run: %s\n", name, result.why_not.c_str());
     return 1;
   }
-  std::printf("%-40s worst lookup %6.3f ms (at %6.3f s)   batches stored %llu of %llu, one "
-              "every %lld us   lookups %llu\n",
-              name, std::chrono::duration<double, std::milli>(result.worst_lookup).count(),
-              std::chrono::duration<double>(result.worst_lookup_at).count(),
-              static_cast<unsigned long long>(result.batches_stored),
-              static_cast<unsigned long long>(result.batches_due),
-              static_cast<long long>(result.batch_period.count()),
-              static_cast<unsigned long long>(result.lookups));
+  std::printf(
+      "%-40s worst lookup %6.3f ms (at %6.3f s)   batches stored %llu of %llu, one "
+      "every %lld us   lookups %llu\n",
+      name, std::chrono::duration<double, std::milli>(result.worst_lookup).count(),
+      std::chrono::duration<double>(result.worst_lookup_at).count(),
+      static_cast<unsigned long long>(result.batches_stored),
+      static_cast<unsigned long long>(result.batches_due),
+      static_cast<long long>(result.batch_period.count()),
+      static_cast<unsigned long long>(result.lookups));
   return 0;
 }
 
@@ -35,8 +36,11 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::printf("one core; 1 kHz batches of 99 transforms; lookups 500 us busy, 500 us asleep\n");
-  int failures = report("SCHED_FIFO lookups alone (floor)", lcmtf_bench::RealtimeThread::kLookupsAlone, seconds);
-  failures += report("SCHED_FIFO lookups, ordinary receiver", lcmtf_bench::RealtimeThread::kLookups, seconds);
-  failures += report("SCHED_FIFO receiver, ordinary lookups", lcmtf_bench::RealtimeThread::kReceiver, seconds);
+  int failures = report("SCHED_FIFO lookups alone (floor)",
+                        lcmtf_bench::RealtimeThread::kLookupsAlone, seconds);
+  failures += report("SCHED_FIFO lookups, ordinary receiver", lcmtf_bench::RealtimeThread::kLookups,
+                     seconds);
+  failures += report("SCHED_FIFO receiver, ordinary lookups",
+                     lcmtf_bench::RealtimeThread::kReceiver, seconds);
   return failures == 0 ? 0 : 1;
 }

@@ -8,6 +8,7 @@
 #include "lcmtf/frame_name.hpp"
 #include "lcmtf/message_conversions.hpp"
 #include "lcmtf/printable.hpp"
+#include "lcmtf/subscription_budget.hpp"
 #include "listener_authorities.hpp"
 #include "open_lcm.hpp"
 #include "time_cache.hpp"
@@ -28,6 +29,11 @@ constexpr std::size_t kResetsReported = 10;
 constexpr std::size_t kLargestBatchKept = 1024;
 
 }  // namespace
+
+struct TransformListener::ChannelQueue {
+  std::string channel;
+  SubscriptionBudget budget;
+};
 
 struct TransformListener::Scratch {
   tf_message_t batch;
@@ -91,7 +97,7 @@ TransformListener::TransformListener(Buffer& buffer, lcm::LCM& lcm, ListenerOpti
 TransformListener::~TransformListener() {
   stopping_ = true;
   if (thread_.joinable()) thread_.join();
-  for (lcm::Subscription* subscription : subscriptions_) lcm_.unsubscribe(subscription);
+  for (const ChannelQueue& queue : queues_) lcm_.unsubscribe(queue.budget.subscription());
 }
 
 void TransformListener::subscribe() {
@@ -102,8 +108,8 @@ void TransformListener::subscribe() {
   if (!options_.static_only) channels.push_back(options_.channel);
   for (const std::string& channel : channels) {
     lcm::Subscription* subscription = lcm_.subscribe(channel, &TransformListener::onMessage, this);
-    subscription->setQueueCapacity(options_.queue_capacity);
-    subscriptions_.push_back(subscription);
+    queues_.push_back(ChannelQueue{
+        channel, SubscriptionBudget(subscription, options_.queue_bytes, options_.queue_capacity)});
   }
   if (options_.request_statics_at_start) requestStatics();
 }
@@ -147,9 +153,23 @@ void TransformListener::report(const std::string& kind, const std::string& messa
   }
 }
 
+void TransformListener::fitQueue(ChannelQueue& queue, std::size_t message_size) {
+  if (!queue.budget.fit(message_size)) return;
+  std::lock_guard<std::mutex> guard(mutex_);
+  ++statistics_.queue_shortened;
+  report("queue", "a message of " + std::to_string(message_size) + " bytes on " + queue.channel +
+                      ": the listener now lets LCM queue " +
+                      std::to_string(queue.budget.capacity()) +
+                      " messages on that channel (queue_bytes " +
+                      std::to_string(options_.queue_bytes) + ")");
+}
+
 void TransformListener::onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
   // Nothing may escape into LCM's C dispatch loop.
   try {
+    for (ChannelQueue& queue : queues_) {
+      if (queue.channel == channel) fitQueue(queue, buffer->data_size);
+    }
     handleMessage(buffer->data, buffer->data_size, channel);
   } catch (const std::exception& e) {
     std::lock_guard<std::mutex> guard(mutex_);

@@ -9,7 +9,9 @@ namespace lcmtf::nodes {
 namespace {
 
 // Messages LCM may queue per channel between two handle calls; bursts are counted, not lost.
+// Fewer while messages come too large for that many to fit in the bytes (SubscriptionBudget).
 constexpr int kQueueCapacity = 10000;
+constexpr std::size_t kQueueBytes = std::size_t{256} << 20;
 
 }  // namespace
 
@@ -17,15 +19,14 @@ TfTrafficSubscriber::TfTrafficSubscriber(lcm::LCM& lcm, const TfConnection& conn
                                          TfTraffic& traffic, BatchObserver observer)
     : lcm_(lcm), connection_(connection), traffic_(traffic), observer_(std::move(observer)) {
   for (const std::string& channel : {connection_.tf_channel, connection_.static_channel}) {
-    lcm::Subscription* subscription =
-        lcm_.subscribe(channel, &TfTrafficSubscriber::onMessage, this);
-    subscription->setQueueCapacity(kQueueCapacity);
-    subscriptions_.push_back(subscription);
+    queues_.push_back(ChannelQueue{
+        channel, SubscriptionBudget(lcm_.subscribe(channel, &TfTrafficSubscriber::onMessage, this),
+                                    kQueueBytes, kQueueCapacity)});
   }
 }
 
 TfTrafficSubscriber::~TfTrafficSubscriber() {
-  for (lcm::Subscription* subscription : subscriptions_) lcm_.unsubscribe(subscription);
+  for (const ChannelQueue& queue : queues_) lcm_.unsubscribe(queue.budget.subscription());
 }
 
 void TfTrafficSubscriber::requestStatics(const std::string& requester) {
@@ -36,6 +37,9 @@ void TfTrafficSubscriber::requestStatics(const std::string& requester) {
 }
 
 void TfTrafficSubscriber::onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  for (ChannelQueue& queue : queues_) {
+    if (queue.channel == channel) queue.budget.fit(buffer->data_size);
+  }
   tf_message_t batch;
   const DecodeResult decoded = decodeMessage(buffer->data, buffer->data_size, batch);
   if (!decoded.ok) {

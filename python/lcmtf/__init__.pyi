@@ -83,6 +83,7 @@ class ListenerStatistics:
     sequence_restarts: Final[int]
     authorities_followed: Final[int]
     authorities_forgotten: Final[int]
+    queue_shortened: Final[int]
 
 class AuthorityStatistics:
     authority: Final[str]
@@ -228,6 +229,7 @@ class TransformListener:
         max_frames: int = 10000,
         max_authorities: int = 1000,
         queue_capacity: int = 1000,
+        queue_bytes: int = 67108864,
         authority: Optional[str] = None,
         request_statics_at_start: bool = True,
         max_interpolation_gap: float = 0.0,

@@ -24,14 +24,12 @@ BufferPtr bufferArgument(py::handle value) {
   return value.cast<BufferPtr>();
 }
 
-std::unique_ptr<Listener> makeListener(py::handle buffer_arg, OptionalStrArg lcm_url,
-                                       StrArg channel, StrArg static_channel,
-                                       StrArg static_request_channel, bool static_only,
-                                       py::handle allowed_authorities, IntArg max_frames,
-                                       IntArg max_authorities, IntArg queue_capacity,
-                                       OptionalStrArg authority, bool request_statics_at_start,
-                                       FloatArg max_interpolation_gap, IntArg max_name_bytes,
-                                       IntArg max_array_elements, py::handle reporter) {
+std::unique_ptr<Listener> makeListener(
+    py::handle buffer_arg, OptionalStrArg lcm_url, StrArg channel, StrArg static_channel,
+    StrArg static_request_channel, bool static_only, py::handle allowed_authorities,
+    IntArg max_frames, IntArg max_authorities, IntArg queue_capacity, IntArg queue_bytes,
+    OptionalStrArg authority, bool request_statics_at_start, FloatArg max_interpolation_gap,
+    IntArg max_name_bytes, IntArg max_array_elements, py::handle reporter) {
   const BufferPtr buffer = bufferArgument(buffer_arg);
   const ListenerOptions defaults;
   ListenerOptions options;
@@ -44,6 +42,7 @@ std::unique_ptr<Listener> makeListener(py::handle buffer_arg, OptionalStrArg lcm
   options.max_frames = count(max_frames, "max_frames", 1);
   options.max_authorities = count(max_authorities, "max_authorities", 1);
   options.queue_capacity = static_cast<int>(count(queue_capacity, "queue_capacity", 1, INT_MAX));
+  options.queue_bytes = count(queue_bytes, "queue_bytes", 1);
   options.authority = textOr(authority, "authority", defaults.authority);
   options.request_statics_at_start = request_statics_at_start;
   options.max_interpolation_gap = duration(max_interpolation_gap, "max_interpolation_gap");
@@ -74,7 +73,8 @@ void bindListener(py::module_& module) {
       py::arg("static_only") = defaults.static_only, py::arg("allowed_authorities") = py::none(),
       py::arg("max_frames") = defaults.max_frames,
       py::arg("max_authorities") = defaults.max_authorities,
-      py::arg("queue_capacity") = defaults.queue_capacity, py::arg("authority") = py::none(),
+      py::arg("queue_capacity") = defaults.queue_capacity,
+      py::arg("queue_bytes") = defaults.queue_bytes, py::arg("authority") = py::none(),
       py::arg("request_statics_at_start") = defaults.request_statics_at_start,
       py::arg("max_interpolation_gap") = seconds(defaults.max_interpolation_gap),
       py::arg("max_name_bytes") = defaults.limits.max_name_bytes,
@@ -84,7 +84,8 @@ void bindListener(py::module_& module) {
       "udpm://239.255.76.67:7667?ttl=0). static_only ignores the dynamic channel; "
       "allowed_authorities (None: all) names the senders accepted; max_frames bounds the frame "
       "names it adds; max_authorities the senders it follows; queue_capacity the messages LCM "
-      "queues per channel; `authority` names it in its requests (None: program@host:pid); "
+      "queues per channel, fewer while larger messages come than fit in queue_bytes; `authority` "
+      "names it in its requests (None: program@host:pid); "
       "request_statics_at_start False leaves request_statics() to the caller; "
       "max_interpolation_gap (seconds, 0.0 for none) is set on the buffer; max_name_bytes and "
       "max_array_elements bound incoming messages; `reporter(message)` gets the first message "

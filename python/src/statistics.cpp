@@ -93,6 +93,8 @@ void bindListenerStatistics(py::module_& module) {
       .field("authorities_followed", &S::authorities_followed, "Senders followed now.")
       .field("authorities_forgotten", &S::authorities_forgotten,
              "Senders forgotten to make room for new ones.")
+      .field("queue_shortened", &S::queue_shortened,
+             "Times large messages made LCM hold fewer waiting on a channel (queue_bytes).")
       .finish();
 }
 

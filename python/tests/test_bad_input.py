@@ -88,6 +88,9 @@ CASES = {
     "listener frames negative": (
         lambda buffer: lcmtf.TransformListener(buffer, "memq://", max_frames=-1), ValueError,
         "max_frames"),
+    "listener queue bytes zero": (
+        lambda buffer: lcmtf.TransformListener(buffer, "memq://", queue_bytes=0), ValueError,
+        "queue_bytes"),
     "listener authorities a str": (
         lambda buffer: lcmtf.TransformListener(buffer, "memq://", allowed_authorities="me"),
         TypeError, "allowed_authorities"),

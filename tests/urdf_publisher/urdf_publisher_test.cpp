@@ -167,6 +167,25 @@ TEST_F(UrdfPublisherTest, BadJointStatesOnTheNetworkAreCountedAndReported) {
   EXPECT_THAT(reports_[1], HasSubstr("'ghost'"));
 }
 
+// LCM holds fewer joint states while large ones come (what it holds: ListenerQueue tests).
+TEST_F(UrdfPublisherTest, LargeJointStatesShortenTheQueueOfThemLcmHolds) {
+  UrdfPublisherOptions shortened = options();
+  shortened.queue_bytes = 100'000;
+  UrdfPublisher publisher(lcm_, robot_, shortened);
+  const joint_state_t state = jointState(kStamp, {{"elbow_joint", 0.1}});
+  lcm_.publish(kJointStatesChannel, &state);
+  handleAll();
+  EXPECT_EQ(publisher.jointStateQueueShortened(), 0u);
+
+  const std::vector<char> large(60'000, 'x');
+  lcm_.publish(kJointStatesChannel, large.data(), static_cast<unsigned int>(large.size()));
+  lcm_.publish(kJointStatesChannel, large.data(), static_cast<unsigned int>(large.size()));
+  lcm_.publish(kJointStatesChannel, &state);
+  handleAll();
+  EXPECT_EQ(publisher.jointStateQueueShortened(), 1u);
+  EXPECT_EQ(publisher.statistics().batches, 2u);
+}
+
 TEST_F(UrdfPublisherTest, TheDescriptionIsSentAgainWhenAsked) {
   UrdfPublisher publisher(lcm_, robot_, options());
   handleAll();

@@ -6,21 +6,33 @@
 
 namespace lcmtf::urdf {
 
+namespace {
+
+// What LCM may hold of each source's joint states: its own default count, within a budget.
+constexpr int kQueueCapacity = 30;
+constexpr std::size_t kQueueBytes = std::size_t{64} << 20;
+
+}  // namespace
+
 JointStateSources::JointStateSources(lcm::LCM& lcm, const std::vector<std::string>& channels,
                                      const std::vector<std::string>& joint_names)
     : lcm_(lcm), positions_(joint_names.size()) {
   for (std::size_t i = 0; i < joint_names.size(); ++i) index_of_[joint_names[i]] = i;
   for (const std::string& channel : channels) {
-    subscriptions_.push_back(lcm_.subscribe(channel, &JointStateSources::onMessage, this));
+    queues_.push_back(SourceQueue{
+        channel, SubscriptionBudget(lcm_.subscribe(channel, &JointStateSources::onMessage, this),
+                                    kQueueBytes, kQueueCapacity)});
   }
 }
 
 JointStateSources::~JointStateSources() {
-  for (lcm::Subscription* subscription : subscriptions_) lcm_.unsubscribe(subscription);
+  for (const SourceQueue& queue : queues_) lcm_.unsubscribe(queue.budget.subscription());
 }
 
-void JointStateSources::onMessage(const lcm::ReceiveBuffer* buffer,
-                                  const std::string& /*channel*/) {
+void JointStateSources::onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  for (SourceQueue& queue : queues_) {
+    if (queue.channel == channel) queue.budget.fit(buffer->data_size);
+  }
   take(buffer->data, buffer->data_size);
 }
 

@@ -26,9 +26,9 @@ UrdfPublisher::UrdfPublisher(lcm::LCM& lcm, RobotModel robot, UrdfPublisherOptio
       processor_(robot_, options_.joint_states),
       tf_numbering_(options_.tf_channel, options_.joint_states.authority),
       description_problems_(options_.joint_states.reporter) {
-  joint_state_subscription_ =
-      lcm_.subscribe(options_.joint_states_channel, &UrdfPublisher::onJointState, this);
-  joint_state_subscription_->setQueueCapacity(options_.queue_capacity);
+  joint_state_queue_.emplace(
+      lcm_.subscribe(options_.joint_states_channel, &UrdfPublisher::onJointState, this),
+      options_.queue_bytes, options_.queue_capacity);
   if (options_.publish_description) {
     description_request_subscription_ = lcm_.subscribe(options_.description_request_channel,
                                                        &UrdfPublisher::onDescriptionRequest, this);
@@ -42,7 +42,7 @@ UrdfPublisher::UrdfPublisher(lcm::LCM& lcm, RobotModel robot, UrdfPublisherOptio
 }
 
 UrdfPublisher::~UrdfPublisher() {
-  lcm_.unsubscribe(joint_state_subscription_);
+  lcm_.unsubscribe(joint_state_queue_->subscription());
   if (description_request_subscription_) lcm_.unsubscribe(description_request_subscription_);
   if (description_subscription_) lcm_.unsubscribe(description_subscription_);
 }
@@ -91,6 +91,7 @@ void UrdfPublisher::onDescription(const lcm::ReceiveBuffer* buffer, const std::s
 }
 
 void UrdfPublisher::onJointState(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/) {
+  if (joint_state_queue_->fit(buffer->data_size)) ++joint_state_queue_shortened_;
   tf_message_t* batch = processor_.process(buffer->data, buffer->data_size);
   if (!batch) return;
   batch->sequence = tf_numbering_.next();

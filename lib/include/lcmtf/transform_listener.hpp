@@ -35,8 +35,11 @@ struct ListenerOptions {
   std::size_t max_frames = 10000;                ///< new frame names beyond this are refused
   /// Senders followed; a new one forgets one heard least recently, a sender heard only once first.
   std::size_t max_authorities = 1000;
-  DecodeLimits limits;                         ///< bounds on incoming messages
-  int queue_capacity = 1000;                   ///< messages LCM queues per channel
+  DecodeLimits limits;        ///< bounds on incoming messages
+  int queue_capacity = 1000;  ///< messages LCM queues per channel
+  /// Bytes of messages LCM may hold per channel waiting to be handled: while larger messages
+  /// come, fewer than queue_capacity are held (see README, *Bounds*).
+  std::size_t queue_bytes = std::size_t{64} << 20;
   std::string authority = defaultAuthority();  ///< names this listener in its requests
   bool request_statics_at_start = true;  ///< false: the owner calls requestStatics() when ready
   /// When not zero, set on the buffer at start (BufferCore::setMaxInterpolationGap): lookups
@@ -83,6 +86,7 @@ struct ListenerStatistics {
   std::uint64_t sequence_restarts = 0;
   std::uint64_t authorities_followed = 0;   ///< now, at most max_authorities
   std::uint64_t authorities_forgotten = 0;  ///< to make room for new ones (their counts stay here)
+  std::uint64_t queue_shortened = 0;  ///< times large messages made LCM hold fewer for a channel
 };
 
 /// Feeds a Buffer from the TF and TF_STATIC channels, and asks static broadcasters to resend
@@ -116,6 +120,8 @@ class TransformListener {
  private:
   void subscribe();
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+  struct ChannelQueue;
+  void fitQueue(ChannelQueue& queue, std::size_t message_size);
   struct Scratch;
   class ScratchLease;
   void handleBatch(const tf_message_t& batch, bool is_static,
@@ -134,7 +140,7 @@ class TransformListener {
   ListenerOptions options_;
   std::unique_ptr<lcm::LCM> owned_lcm_;
   lcm::LCM& lcm_;
-  std::vector<lcm::Subscription*> subscriptions_;
+  std::vector<ChannelQueue> queues_;  // one per channel subscribed to
 
   mutable std::mutex mutex_;  // guards what follows
   ListenerStatistics statistics_;

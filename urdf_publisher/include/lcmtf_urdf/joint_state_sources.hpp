@@ -9,6 +9,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "lcmtf/joint_state_t.hpp"
+#include "lcmtf/subscription_budget.hpp"
 
 namespace lcmtf::urdf {
 
@@ -36,7 +37,11 @@ class JointStateSources {
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel);
 
   lcm::LCM& lcm_;
-  std::vector<lcm::Subscription*> subscriptions_;
+  struct SourceQueue {
+    std::string channel;
+    SubscriptionBudget budget;
+  };
+  std::vector<SourceQueue> queues_;
   std::unordered_map<std::string, std::size_t> index_of_;
   std::vector<std::optional<double>> positions_;
   joint_state_t decoded_;

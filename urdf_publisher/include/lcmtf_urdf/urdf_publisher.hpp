@@ -13,6 +13,7 @@
 #include "lcmtf/channels.hpp"
 #include "lcmtf/programs/report_once.hpp"
 #include "lcmtf/static_transform_broadcaster.hpp"
+#include "lcmtf/subscription_budget.hpp"
 #include "lcmtf_urdf/joint_state_processor.hpp"
 #include "lcmtf_urdf/robot_model.hpp"
 
@@ -33,6 +34,9 @@ struct UrdfPublisherOptions {
   bool follow_description = false;
   Duration static_resend_period = std::chrono::seconds(1);
   int queue_capacity = 1000;  ///< joint states LCM holds while the publisher is busy
+  /// Bytes of joint states LCM may hold: fewer than queue_capacity while larger ones come
+  /// (lcmtf::SubscriptionBudget).
+  std::size_t queue_bytes = std::size_t{64} << 20;
 };
 
 /// robot_state_publisher on LCM: fixed joints as statics, each joint state as one TF batch, the
@@ -62,6 +66,8 @@ class UrdfPublisher {
   /// Robots taken from new descriptions (follow_description), and descriptions refused.
   std::uint64_t robotsReplaced() const { return robots_replaced_; }
   std::uint64_t descriptionsRefused() const { return descriptions_refused_; }
+  /// Times large joint states made LCM hold fewer of them (queue_bytes).
+  std::uint64_t jointStateQueueShortened() const { return joint_state_queue_shortened_; }
   static constexpr std::chrono::milliseconds kDescriptionAnswerInterval{100};
 
  private:
@@ -78,13 +84,14 @@ class UrdfPublisher {
   JointStateProcessor processor_;
   BatchNumbering tf_numbering_;
   std::optional<StaticTransformBroadcaster> statics_;  // made again for a new robot
-  lcm::Subscription* joint_state_subscription_ = nullptr;
+  std::optional<SubscriptionBudget> joint_state_queue_;
   lcm::Subscription* description_request_subscription_ = nullptr;
   lcm::Subscription* description_subscription_ = nullptr;
   std::optional<RobotModel> next_robot_;  // taken in poll(), outside LCM's dispatch
   std::string refused_urdf_;              // the last text refused, not parsed again
   std::uint64_t robots_replaced_ = 0;
   std::uint64_t descriptions_refused_ = 0;
+  std::uint64_t joint_state_queue_shortened_ = 0;
   programs::OnceReporter description_problems_;
   std::uint64_t publish_failures_ = 0;
   std::uint64_t description_requests_answered_ = 0;

@@ -9,6 +9,7 @@
 #include "lcmtf/nodes/tf_connection.hpp"
 #include "lcmtf/nodes/tf_traffic.hpp"
 #include "lcmtf/programs/command_line.hpp"
+#include "lcmtf/subscription_budget.hpp"
 #include "lcmtf/wire_decode.hpp"
 
 namespace lcmtf::nodes {
@@ -38,7 +39,11 @@ class TfTrafficSubscriber {
   TfConnection connection_;
   TfTraffic& traffic_;
   BatchObserver observer_;
-  std::vector<lcm::Subscription*> subscriptions_;
+  struct ChannelQueue {
+    std::string channel;
+    SubscriptionBudget budget;
+  };
+  std::vector<ChannelQueue> queues_;
 };
 
 }  // namespace lcmtf::nodes
