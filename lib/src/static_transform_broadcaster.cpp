@@ -21,22 +21,26 @@ StaticTransformBroadcaster::StaticTransformBroadcaster(StaticBroadcasterOptions 
       owned_lcm_(detail::openLcm(options_.lcm_url)),
       lcm_(*owned_lcm_),
       numbering_(options_.channel, options_.authority) {
-  subscription_ =
-      lcm_.subscribe(options_.request_channel, &StaticTransformBroadcaster::onRequest, this);
+  subscribeToRequests();
   thread_ = std::thread([this] { run(); });
 }
 
 StaticTransformBroadcaster::StaticTransformBroadcaster(lcm::LCM& lcm,
                                                        StaticBroadcasterOptions options)
     : options_(std::move(options)), lcm_(lcm), numbering_(options_.channel, options_.authority) {
-  subscription_ =
-      lcm_.subscribe(options_.request_channel, &StaticTransformBroadcaster::onRequest, this);
+  subscribeToRequests();
+}
+
+void StaticTransformBroadcaster::subscribeToRequests() {
+  request_queue_.emplace(
+      lcm_.subscribe(options_.request_channel, &StaticTransformBroadcaster::onRequest, this),
+      kDefaultQueueBytes, kLcmDefaultQueueCapacity);
 }
 
 StaticTransformBroadcaster::~StaticTransformBroadcaster() {
   stopping_ = true;
   if (thread_.joinable()) thread_.join();
-  if (subscription_) lcm_.unsubscribe(subscription_);
+  if (request_queue_) lcm_.unsubscribe(request_queue_->subscription());
 }
 
 bool StaticTransformBroadcaster::sendTransform(const TransformStamped& transform) {
@@ -99,6 +103,7 @@ void StaticTransformBroadcaster::resendIfDue() {
 
 void StaticTransformBroadcaster::onRequest(const lcm::ReceiveBuffer* buffer,
                                            const std::string& /*channel*/) {
+  request_queue_->fit(buffer->data_size);
   resend_request_t request;
   if (!decodeMessage(buffer->data, buffer->data_size, request).ok) return;
   ++requests_answered_;

@@ -6,14 +6,6 @@
 
 namespace lcmtf::urdf {
 
-namespace {
-
-// What LCM may hold of each source's joint states: its own default count, within a budget.
-constexpr int kQueueCapacity = 30;
-constexpr std::size_t kQueueBytes = std::size_t{64} << 20;
-
-}  // namespace
-
 JointStateSources::JointStateSources(lcm::LCM& lcm, const std::vector<std::string>& channels,
                                      const std::vector<std::string>& joint_names)
     : lcm_(lcm), positions_(joint_names.size()) {
@@ -21,7 +13,7 @@ JointStateSources::JointStateSources(lcm::LCM& lcm, const std::vector<std::strin
   for (const std::string& channel : channels) {
     queues_.push_back(SourceQueue{
         channel, SubscriptionBudget(lcm_.subscribe(channel, &JointStateSources::onMessage, this),
-                                    kQueueBytes, kQueueCapacity)});
+                                    kDefaultQueueBytes, kLcmDefaultQueueCapacity)});
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include "lcmtf/programs/report_once.hpp"
 #include "lcmtf/resend_request_t.hpp"
+#include "lcmtf/subscription_budget.hpp"
 #include "lcmtf/wire_decode.hpp"
 
 namespace lcmtf::urdf {
@@ -14,6 +15,7 @@ class DescriptionCatcher {
       : reporter_(options.reporter) {}
 
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    queue->fit(buffer->data_size);
     if (robot) return;
     ++statistics.received;
     robot_description_t description;
@@ -31,6 +33,7 @@ class DescriptionCatcher {
 
   std::optional<RobotModel> robot;
   DescriptionWaitStatistics statistics;
+  std::optional<SubscriptionBudget> queue;
 
  private:
   // The same refusal again (a sender that keeps resending it) is counted, not repeated.
@@ -59,8 +62,8 @@ std::optional<RobotModel> waitForRobotDescription(lcm::LCM& lcm,
                                                   const std::atomic<bool>& stop,
                                                   DescriptionWaitStatistics* statistics) {
   DescriptionCatcher catcher(options);
-  lcm::Subscription* subscription =
-      lcm.subscribe(options.channel, &DescriptionCatcher::onMessage, &catcher);
+  catcher.queue.emplace(lcm.subscribe(options.channel, &DescriptionCatcher::onMessage, &catcher),
+                        kDefaultQueueBytes, kLcmDefaultQueueCapacity);
   resend_request_t request{};
   request.requester = options.authority;
   const auto start = std::chrono::steady_clock::now();
@@ -75,7 +78,7 @@ std::optional<RobotModel> waitForRobotDescription(lcm::LCM& lcm,
     }
     lcm.handleTimeout(50);
   }
-  lcm.unsubscribe(subscription);
+  lcm.unsubscribe(catcher.queue->subscription());
   if (statistics) *statistics = catcher.statistics;
   return std::move(catcher.robot);
 }

@@ -30,21 +30,23 @@ UrdfPublisher::UrdfPublisher(lcm::LCM& lcm, RobotModel robot, UrdfPublisherOptio
       lcm_.subscribe(options_.joint_states_channel, &UrdfPublisher::onJointState, this),
       options_.queue_bytes, options_.queue_capacity);
   if (options_.publish_description) {
-    description_request_subscription_ = lcm_.subscribe(options_.description_request_channel,
-                                                       &UrdfPublisher::onDescriptionRequest, this);
+    description_request_queue_.emplace(lcm_.subscribe(options_.description_request_channel,
+                                                      &UrdfPublisher::onDescriptionRequest, this),
+                                       kDefaultQueueBytes, kLcmDefaultQueueCapacity);
     publishDescription();
   }
   if (options_.follow_description) {
-    description_subscription_ =
-        lcm_.subscribe(options_.description_channel, &UrdfPublisher::onDescription, this);
+    description_queue_.emplace(
+        lcm_.subscribe(options_.description_channel, &UrdfPublisher::onDescription, this),
+        kDefaultQueueBytes, kLcmDefaultQueueCapacity);
   }
   publishStatics();
 }
 
 UrdfPublisher::~UrdfPublisher() {
   lcm_.unsubscribe(joint_state_queue_->subscription());
-  if (description_request_subscription_) lcm_.unsubscribe(description_request_subscription_);
-  if (description_subscription_) lcm_.unsubscribe(description_subscription_);
+  if (description_request_queue_) lcm_.unsubscribe(description_request_queue_->subscription());
+  if (description_queue_) lcm_.unsubscribe(description_queue_->subscription());
 }
 
 // A broadcaster of its own for each robot, so the statics of a robot replaced are sent no more.
@@ -69,6 +71,7 @@ void UrdfPublisher::poll() {
 }
 
 void UrdfPublisher::onDescription(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  description_queue_->fit(buffer->data_size);
   robot_description_t description;
   const DecodeResult decoded = decodeMessage(buffer->data, buffer->data_size, description);
   if (!decoded.ok) {
@@ -100,6 +103,7 @@ void UrdfPublisher::onJointState(const lcm::ReceiveBuffer* buffer, const std::st
 
 void UrdfPublisher::onDescriptionRequest(const lcm::ReceiveBuffer* buffer,
                                          const std::string& /*channel*/) {
+  description_request_queue_->fit(buffer->data_size);
   resend_request_t request;
   if (!decodeMessage(buffer->data, buffer->data_size, request).ok) return;
   ++description_requests_answered_;

@@ -15,7 +15,7 @@ RobotSource::RobotSource(lcm::LCM& lcm, RobotSourceOptions options, RobotSink si
       reporter_(std::make_unique<programs::OnceReporter>(std::move(reporter))) {}
 
 RobotSource::~RobotSource() {
-  if (subscription_) lcm_.unsubscribe(subscription_);
+  if (description_queue_) lcm_.unsubscribe(description_queue_->subscription());
 }
 
 void RobotSource::loadFile(const std::string& path) {
@@ -28,13 +28,14 @@ void RobotSource::loadFile(const std::string& path) {
 }
 
 void RobotSource::follow() {
-  subscription_ = lcm_.subscribe(options_.description_channel, &RobotSource::onDescription, this);
   // Descriptions are a few hundred kilobytes at most; there is no need to keep many.
-  subscription_->setQueueCapacity(4);
+  description_queue_.emplace(
+      lcm_.subscribe(options_.description_channel, &RobotSource::onDescription, this),
+      kDefaultQueueBytes, 4);
 }
 
 void RobotSource::askIfWaiting(TimePoint now) {
-  if (have_robot_ || !subscription_ || now - last_request_ < options_.request_period) return;
+  if (have_robot_ || !description_queue_ || now - last_request_ < options_.request_period) return;
   last_request_ = now;
   resend_request_t request{};
   request.utime = toUtime(now);
@@ -43,6 +44,7 @@ void RobotSource::askIfWaiting(TimePoint now) {
 }
 
 void RobotSource::onDescription(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  description_queue_->fit(buffer->data_size);
   ++statistics_.received;
   robot_description_t description;
   const DecodeResult decoded = decodeMessage(buffer->data, buffer->data_size, description);

@@ -4,6 +4,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -12,6 +13,7 @@
 
 #include "lcmtf/batch_numbering.hpp"
 #include "lcmtf/channels.hpp"
+#include "lcmtf/subscription_budget.hpp"
 #include "lcmtf/time.hpp"
 #include "lcmtf/transform_stamped.hpp"
 
@@ -52,6 +54,7 @@ class StaticTransformBroadcaster {
   std::uint64_t requestsAnswered() const { return requests_answered_.load(); }
 
  private:
+  void subscribeToRequests();
   void onRequest(const lcm::ReceiveBuffer* buffer, const std::string& channel);
   bool publishAll();
   void run();
@@ -59,7 +62,7 @@ class StaticTransformBroadcaster {
   StaticBroadcasterOptions options_;
   std::unique_ptr<lcm::LCM> owned_lcm_;
   lcm::LCM& lcm_;
-  lcm::Subscription* subscription_ = nullptr;
+  std::optional<SubscriptionBudget> request_queue_;
   BatchNumbering numbering_;
   std::mutex publish_mutex_;  // batches leave in the order of their numbers
   mutable std::mutex mutex_;

@@ -7,6 +7,11 @@
 
 namespace lcmtf {
 
+/// The count LCM gives a subscription unless told otherwise.
+inline constexpr int kLcmDefaultQueueCapacity = 30;
+/// The budget of bytes lcmtf's own subscriptions keep what LCM holds for them within.
+inline constexpr std::size_t kDefaultQueueBytes = std::size_t{64} << 20;
+
 namespace detail {
 class QueueByteBudget;
 }

@@ -15,6 +15,7 @@
 
 #include "lcmtf/buffer.hpp"
 #include "lcmtf/channels.hpp"
+#include "lcmtf/subscription_budget.hpp"
 #include "lcmtf/wire_decode.hpp"
 
 namespace lcmtf {
@@ -39,7 +40,7 @@ struct ListenerOptions {
   int queue_capacity = 1000;  ///< messages LCM queues per channel
   /// Bytes of messages LCM may hold per channel waiting to be handled: while larger messages
   /// come, fewer than queue_capacity are held (see README, *Bounds*).
-  std::size_t queue_bytes = std::size_t{64} << 20;
+  std::size_t queue_bytes = kDefaultQueueBytes;
   std::string authority = defaultAuthority();  ///< names this listener in its requests
   bool request_statics_at_start = true;  ///< false: the owner calls requestStatics() when ready
   /// When not zero, set on the buffer at start (BufferCore::setMaxInterpolationGap): lookups

@@ -36,7 +36,7 @@ struct UrdfPublisherOptions {
   int queue_capacity = 1000;  ///< joint states LCM holds while the publisher is busy
   /// Bytes of joint states LCM may hold: fewer than queue_capacity while larger ones come
   /// (lcmtf::SubscriptionBudget).
-  std::size_t queue_bytes = std::size_t{64} << 20;
+  std::size_t queue_bytes = kDefaultQueueBytes;
 };
 
 /// robot_state_publisher on LCM: fixed joints as statics, each joint state as one TF batch, the
@@ -85,8 +85,8 @@ class UrdfPublisher {
   BatchNumbering tf_numbering_;
   std::optional<StaticTransformBroadcaster> statics_;  // made again for a new robot
   std::optional<SubscriptionBudget> joint_state_queue_;
-  lcm::Subscription* description_request_subscription_ = nullptr;
-  lcm::Subscription* description_subscription_ = nullptr;
+  std::optional<SubscriptionBudget> description_request_queue_;
+  std::optional<SubscriptionBudget> description_queue_;
   std::optional<RobotModel> next_robot_;  // taken in poll(), outside LCM's dispatch
   std::string refused_urdf_;              // the last text refused, not parsed again
   std::uint64_t robots_replaced_ = 0;

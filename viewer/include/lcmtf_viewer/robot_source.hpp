@@ -4,11 +4,13 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <lcm/lcm-cpp.hpp>
 
 #include "lcmtf/programs/report_once.hpp"
+#include "lcmtf/subscription_budget.hpp"
 #include "lcmtf/time.hpp"
 #include "lcmtf_viewer/robot_view.hpp"
 
@@ -56,7 +58,7 @@ class RobotSource {
   RobotSourceOptions options_;
   RobotSink sink_;
   std::unique_ptr<programs::OnceReporter> reporter_;
-  lcm::Subscription* subscription_ = nullptr;
+  std::optional<SubscriptionBudget> description_queue_;
   std::string last_text_;
   bool have_robot_ = false;
   TimePoint last_request_;
