@@ -34,7 +34,7 @@ StaticTransformBroadcaster::StaticTransformBroadcaster(lcm::LCM& lcm,
 void StaticTransformBroadcaster::subscribeToRequests() {
   request_queue_.emplace(
       lcm_.subscribe(options_.request_channel, &StaticTransformBroadcaster::onRequest, this),
-      kDefaultQueueBytes, kLcmDefaultQueueCapacity);
+      options_.request_channel, kDefaultQueueBytes, kLcmDefaultQueueCapacity);
 }
 
 StaticTransformBroadcaster::~StaticTransformBroadcaster() {

@@ -30,11 +30,6 @@ constexpr std::size_t kLargestBatchKept = 1024;
 
 }  // namespace
 
-struct TransformListener::ChannelQueue {
-  std::string channel;
-  SubscriptionBudget budget;
-};
-
 struct TransformListener::Scratch {
   tf_message_t batch;
   std::vector<TransformStamped> accepted;  // may hold more than one batch's: only grows
@@ -97,7 +92,7 @@ TransformListener::TransformListener(Buffer& buffer, lcm::LCM& lcm, ListenerOpti
 TransformListener::~TransformListener() {
   stopping_ = true;
   if (thread_.joinable()) thread_.join();
-  for (const ChannelQueue& queue : queues_) lcm_.unsubscribe(queue.budget.subscription());
+  for (const SubscriptionBudget& queue : queues_) lcm_.unsubscribe(queue.subscription());
 }
 
 void TransformListener::subscribe() {
@@ -108,8 +103,7 @@ void TransformListener::subscribe() {
   if (!options_.static_only) channels.push_back(options_.channel);
   for (const std::string& channel : channels) {
     lcm::Subscription* subscription = lcm_.subscribe(channel, &TransformListener::onMessage, this);
-    queues_.push_back(ChannelQueue{
-        channel, SubscriptionBudget(subscription, options_.queue_bytes, options_.queue_capacity)});
+    queues_.emplace_back(subscription, channel, options_.queue_bytes, options_.queue_capacity);
   }
   if (options_.request_statics_at_start) requestStatics();
 }
@@ -153,13 +147,13 @@ void TransformListener::report(const std::string& kind, const std::string& messa
   }
 }
 
-void TransformListener::fitQueue(ChannelQueue& queue, std::size_t message_size) {
-  if (!queue.budget.fit(message_size)) return;
+void TransformListener::fitQueue(const std::string& channel, std::size_t message_size) {
+  const SubscriptionBudget* shortened = fitChannel(queues_, channel, message_size);
+  if (!shortened) return;
   std::lock_guard<std::mutex> guard(mutex_);
   ++statistics_.queue_shortened;
-  report("queue", "a message of " + std::to_string(message_size) + " bytes on " + queue.channel +
-                      ": the listener now lets LCM queue " +
-                      std::to_string(queue.budget.capacity()) +
+  report("queue", "a message of " + std::to_string(message_size) + " bytes on " + channel +
+                      ": the listener now lets LCM queue " + std::to_string(shortened->capacity()) +
                       " messages on that channel (queue_bytes " +
                       std::to_string(options_.queue_bytes) + ")");
 }
@@ -167,9 +161,7 @@ void TransformListener::fitQueue(ChannelQueue& queue, std::size_t message_size) 
 void TransformListener::onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
   // Nothing may escape into LCM's C dispatch loop.
   try {
-    for (ChannelQueue& queue : queues_) {
-      if (queue.channel == channel) fitQueue(queue, buffer->data_size);
-    }
+    fitQueue(channel, buffer->data_size);
     handleMessage(buffer->data, buffer->data_size, channel);
   } catch (const std::exception& e) {
     std::lock_guard<std::mutex> guard(mutex_);

@@ -19,14 +19,13 @@ TfTrafficSubscriber::TfTrafficSubscriber(lcm::LCM& lcm, const TfConnection& conn
                                          TfTraffic& traffic, BatchObserver observer)
     : lcm_(lcm), connection_(connection), traffic_(traffic), observer_(std::move(observer)) {
   for (const std::string& channel : {connection_.tf_channel, connection_.static_channel}) {
-    queues_.push_back(ChannelQueue{
-        channel, SubscriptionBudget(lcm_.subscribe(channel, &TfTrafficSubscriber::onMessage, this),
-                                    kQueueBytes, kQueueCapacity)});
+    queues_.emplace_back(lcm_.subscribe(channel, &TfTrafficSubscriber::onMessage, this), channel,
+                         kQueueBytes, kQueueCapacity);
   }
 }
 
 TfTrafficSubscriber::~TfTrafficSubscriber() {
-  for (const ChannelQueue& queue : queues_) lcm_.unsubscribe(queue.budget.subscription());
+  for (const SubscriptionBudget& queue : queues_) lcm_.unsubscribe(queue.subscription());
 }
 
 void TfTrafficSubscriber::requestStatics(const std::string& requester) {
@@ -37,9 +36,7 @@ void TfTrafficSubscriber::requestStatics(const std::string& requester) {
 }
 
 void TfTrafficSubscriber::onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
-  for (ChannelQueue& queue : queues_) {
-    if (queue.channel == channel) queue.budget.fit(buffer->data_size);
-  }
+  fitChannel(queues_, channel, buffer->data_size);
   tf_message_t batch;
   const DecodeResult decoded = decodeMessage(buffer->data, buffer->data_size, batch);
   if (!decoded.ok) {

@@ -11,20 +11,17 @@ JointStateSources::JointStateSources(lcm::LCM& lcm, const std::vector<std::strin
     : lcm_(lcm), positions_(joint_names.size()) {
   for (std::size_t i = 0; i < joint_names.size(); ++i) index_of_[joint_names[i]] = i;
   for (const std::string& channel : channels) {
-    queues_.push_back(SourceQueue{
-        channel, SubscriptionBudget(lcm_.subscribe(channel, &JointStateSources::onMessage, this),
-                                    kDefaultQueueBytes, kLcmDefaultQueueCapacity)});
+    queues_.emplace_back(lcm_.subscribe(channel, &JointStateSources::onMessage, this), channel,
+                         kDefaultQueueBytes, kLcmDefaultQueueCapacity);
   }
 }
 
 JointStateSources::~JointStateSources() {
-  for (const SourceQueue& queue : queues_) lcm_.unsubscribe(queue.budget.subscription());
+  for (const SubscriptionBudget& queue : queues_) lcm_.unsubscribe(queue.subscription());
 }
 
 void JointStateSources::onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
-  for (SourceQueue& queue : queues_) {
-    if (queue.channel == channel) queue.budget.fit(buffer->data_size);
-  }
+  fitChannel(queues_, channel, buffer->data_size);
   take(buffer->data, buffer->data_size);
 }
 

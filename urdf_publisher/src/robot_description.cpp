@@ -63,7 +63,7 @@ std::optional<RobotModel> waitForRobotDescription(lcm::LCM& lcm,
                                                   DescriptionWaitStatistics* statistics) {
   DescriptionCatcher catcher(options);
   catcher.queue.emplace(lcm.subscribe(options.channel, &DescriptionCatcher::onMessage, &catcher),
-                        kDefaultQueueBytes, kLcmDefaultQueueCapacity);
+                        options.channel, kDefaultQueueBytes, kLcmDefaultQueueCapacity);
   resend_request_t request{};
   request.requester = options.authority;
   const auto start = std::chrono::steady_clock::now();

@@ -28,17 +28,18 @@ UrdfPublisher::UrdfPublisher(lcm::LCM& lcm, RobotModel robot, UrdfPublisherOptio
       description_problems_(options_.joint_states.reporter) {
   joint_state_queue_.emplace(
       lcm_.subscribe(options_.joint_states_channel, &UrdfPublisher::onJointState, this),
-      options_.queue_bytes, options_.queue_capacity);
+      options_.joint_states_channel, options_.queue_bytes, options_.queue_capacity);
   if (options_.publish_description) {
     description_request_queue_.emplace(lcm_.subscribe(options_.description_request_channel,
                                                       &UrdfPublisher::onDescriptionRequest, this),
-                                       kDefaultQueueBytes, kLcmDefaultQueueCapacity);
+                                       options_.description_request_channel, kDefaultQueueBytes,
+                                       kLcmDefaultQueueCapacity);
     publishDescription();
   }
   if (options_.follow_description) {
     description_queue_.emplace(
         lcm_.subscribe(options_.description_channel, &UrdfPublisher::onDescription, this),
-        kDefaultQueueBytes, kLcmDefaultQueueCapacity);
+        options_.description_channel, kDefaultQueueBytes, kLcmDefaultQueueCapacity);
   }
   publishStatics();
 }

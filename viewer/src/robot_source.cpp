@@ -31,7 +31,7 @@ void RobotSource::follow() {
   // Descriptions are a few hundred kilobytes at most; there is no need to keep many.
   description_queue_.emplace(
       lcm_.subscribe(options_.description_channel, &RobotSource::onDescription, this),
-      kDefaultQueueBytes, 4);
+      options_.description_channel, kDefaultQueueBytes, 4);
 }
 
 void RobotSource::askIfWaiting(TimePoint now) {

@@ -121,8 +121,7 @@ class TransformListener {
  private:
   void subscribe();
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel);
-  struct ChannelQueue;
-  void fitQueue(ChannelQueue& queue, std::size_t message_size);
+  void fitQueue(const std::string& channel, std::size_t message_size);
   struct Scratch;
   class ScratchLease;
   void handleBatch(const tf_message_t& batch, bool is_static,
@@ -141,7 +140,7 @@ class TransformListener {
   ListenerOptions options_;
   std::unique_ptr<lcm::LCM> owned_lcm_;
   lcm::LCM& lcm_;
-  std::vector<ChannelQueue> queues_;  // one per channel subscribed to
+  std::vector<SubscriptionBudget> queues_;  // one per channel subscribed to
 
   mutable std::mutex mutex_;  // guards what follows
   ListenerStatistics statistics_;

@@ -37,11 +37,7 @@ class JointStateSources {
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel);
 
   lcm::LCM& lcm_;
-  struct SourceQueue {
-    std::string channel;
-    SubscriptionBudget budget;
-  };
-  std::vector<SourceQueue> queues_;
+  std::vector<SubscriptionBudget> queues_;
   std::unordered_map<std::string, std::size_t> index_of_;
   std::vector<std::optional<double>> positions_;
   joint_state_t decoded_;

@@ -39,11 +39,7 @@ class TfTrafficSubscriber {
   TfConnection connection_;
   TfTraffic& traffic_;
   BatchObserver observer_;
-  struct ChannelQueue {
-    std::string channel;
-    SubscriptionBudget budget;
-  };
-  std::vector<ChannelQueue> queues_;
+  std::vector<SubscriptionBudget> queues_;
 };
 
 }  // namespace lcmtf::nodes
