@@ -613,6 +613,113 @@ TEST(TransformListener, AMaximumInterpolationGapMakesLookupsAcrossLostBatchesFai
                InterpolationGapException);
 }
 
+// A second sender of an edge, its clock an hour ahead (or a forger), sends it once: the sample
+// is refused, and the edge keeps its history and the samples of its publisher.
+TEST(TransformListener, ATransformStampedFarAheadOfTheClockIsRefusedAndTheEdgeKeepsItsPublisher) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;  // 10 s of history
+  std::vector<std::string> reports;
+  ListenerOptions options;
+  options.reporter = [&](const std::string& message) { reports.push_back(message); };
+  TransformListener listener(buffer, lcm, options);
+  TransformBroadcaster odometry(lcm, kTfChannel, "odometry");
+  TransformBroadcaster ahead(lcm, kTfChannel, "clock_ahead");
+  const std::int64_t start = toUtime(now()) - 1'000'000;
+  for (int i = 0; i < 100; ++i) odometry.sendTransform(edge("odom", "base", start + i * 10'000, i));
+  ahead.sendTransform(edge("odom", "base", toUtime(now()) + 3'600'000'000, -999.0));
+  for (int i = 100; i < 110; ++i)
+    odometry.sendTransform(edge("odom", "base", start + i * 10'000, i));
+  drain(lcm);
+
+  const TransformStamped latest = buffer.lookupTransform("odom", "base", kLatestTime);
+  EXPECT_EQ(toUtime(latest.stamp), start + 109 * 10'000);
+  EXPECT_EQ(latest.transform.translation.x(), 109.0);
+  EXPECT_EQ(buffer.lookupTransform("odom", "base", fromUtime(start)).transform.translation.x(),
+            0.0);
+  EXPECT_EQ(buffer.statistics().rejectedTotal(), 0u);
+  EXPECT_EQ(listener.statistics().stamped_ahead, 1u);
+  EXPECT_EQ(listener.statistics().transforms, 110u);
+  EXPECT_EQ(statisticsOf(listener, "clock_ahead").stamped_ahead, 1u);
+  EXPECT_EQ(statisticsOf(listener, "odometry").stamped_ahead, 0u);
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_THAT(reports[0], HasSubstr("'odom' -> 'base' from 'clock_ahead'"));
+  EXPECT_THAT(reports[0], HasSubstr("more than 10.000000 s ahead of this machine's clock"));
+  EXPECT_THAT(reports[0], HasSubstr("max_stamp_ahead"));
+}
+
+// What the limit prevents: stored, the sample an hour ahead becomes the edge's newest, its
+// history goes, and the publisher's samples are refused as older than the history kept.
+TEST(TransformListener, WithNoLimitOneTransformFarAheadMakesTheEdgeRefuseItsPublisher) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;
+  buffer.setErrorReporter(nullptr);
+  ListenerOptions options;
+  options.max_stamp_ahead = Duration::zero();
+  TransformListener listener(buffer, lcm, options);
+  TransformBroadcaster odometry(lcm, kTfChannel, "odometry");
+  TransformBroadcaster ahead(lcm, kTfChannel, "clock_ahead");
+  const std::int64_t start = toUtime(now());
+  odometry.sendTransform(edge("odom", "base", start));
+  ahead.sendTransform(edge("odom", "base", start + 3'600'000'000, -999.0));
+  odometry.sendTransform(edge("odom", "base", start + 10'000));
+  drain(lcm);
+  EXPECT_EQ(listener.statistics().stamped_ahead, 0u);
+  EXPECT_EQ(buffer.statistics().rejectedTotal(), 1u);
+  EXPECT_EQ(buffer.lookupTransform("odom", "base", kLatestTime).transform.translation.x(), -999.0);
+  EXPECT_FALSE(buffer.canTransform("odom", "base", fromUtime(start)));
+}
+
+// The rest of a batch with one transform far ahead is stored, and the sender's newest stamp is
+// not moved by the refused one: its next batch is not taken for a jump back.
+TEST(TransformListener, ABatchWithOneTransformFarAheadKeepsTheRestAndItsSendersNewest) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;
+  ListenerOptions options;
+  options.reporter = nullptr;
+  TransformListener listener(buffer, lcm, options);
+  const std::int64_t start = toUtime(now());
+  receive(listener, "driver", 1,
+          {edge("odom", "base", start), edge("odom", "arm", start + 1'000'000'000'000)},
+          kTfChannel);
+  for (int i = 1; i <= 3; ++i) {
+    receive(listener, "driver", 1 + i, {edge("odom", "base", start + i * 10'000)}, kTfChannel);
+  }
+  EXPECT_EQ(listener.statistics().stamped_ahead, 1u);
+  EXPECT_EQ(listener.statistics().stale_batches, 0u);
+  EXPECT_EQ(listener.statistics().transforms, 4u);
+  EXPECT_FALSE(buffer.frameExists("arm"));
+  EXPECT_EQ(toUtime(buffer.lookupTransform("odom", "base", kLatestTime).stamp), start + 30'000);
+}
+
+// Stamps a little ahead, as from a computer whose clock is slightly ahead, are kept; static
+// transforms are kept whatever their stamp (a static edge holds one value, not a history).
+TEST(TransformListener, StampsWithinTheLimitAndStaticTransformsAreKept) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;
+  TransformListener listener(buffer, lcm);
+  TransformBroadcaster driver(lcm, kTfChannel, "driver");
+  StaticTransformBroadcaster statics(lcm);
+  const std::int64_t ahead = toUtime(now()) + 5'000'000;
+  driver.sendTransform(edge("odom", "base", ahead));
+  statics.sendTransform(edge("base", "camera", ahead + 3'600'000'000));
+  drain(lcm);
+  EXPECT_EQ(listener.statistics().stamped_ahead, 0u);
+  EXPECT_EQ(toUtime(buffer.lookupTransform("odom", "camera", kLatestTime).stamp), ahead);
+}
+
+TEST(TransformListener, ANegativeLimitOnStampsAheadIsRefused) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;
+  ListenerOptions options;
+  options.max_stamp_ahead = -std::chrono::seconds(1);
+  try {
+    TransformListener listener(buffer, lcm, options);
+    ADD_FAILURE() << "a negative max_stamp_ahead was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_THAT(e.what(), HasSubstr("max_stamp_ahead must not be negative"));
+  }
+}
+
 TEST(TransformListener, OwnThreadModeListensOnItsOwnLcm) {
   Buffer buffer;
   ListenerOptions options;

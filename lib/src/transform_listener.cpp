@@ -28,6 +28,14 @@ constexpr std::size_t kResetsReported = 10;
 // batch it stores.
 constexpr std::size_t kLargestBatchKept = 1024;
 
+ListenerOptions checked(ListenerOptions options) {
+  if (options.max_stamp_ahead < Duration::zero()) {
+    throw std::invalid_argument("TransformListener: max_stamp_ahead must not be negative; got " +
+                                toString(options.max_stamp_ahead));
+  }
+  return options;
+}
+
 }  // namespace
 
 struct TransformListener::Scratch {
@@ -68,7 +76,7 @@ class TransformListener::ScratchLease {
 
 TransformListener::TransformListener(Buffer& buffer, ListenerOptions options)
     : buffer_(buffer),
-      options_(std::move(options)),
+      options_(checked(std::move(options))),
       owned_lcm_(detail::openLcm(options_.lcm_url)),
       lcm_(*owned_lcm_),
       authorities_(std::make_unique<detail::ListenerAuthorities>(options_.max_authorities)),
@@ -81,7 +89,7 @@ TransformListener::TransformListener(Buffer& buffer, ListenerOptions options)
 
 TransformListener::TransformListener(Buffer& buffer, lcm::LCM& lcm, ListenerOptions options)
     : buffer_(buffer),
-      options_(std::move(options)),
+      options_(checked(std::move(options))),
       lcm_(lcm),
       authorities_(std::make_unique<detail::ListenerAuthorities>(options_.max_authorities)),
       scratch_(std::make_unique<Scratch>()) {
@@ -223,10 +231,24 @@ detail::HeardAuthority& TransformListener::hear(const tf_message_t& batch, bool 
   return sender;
 }
 
-bool TransformListener::isStale(const tf_message_t& batch, detail::HeardAuthority& sender) {
-  if (batch.transforms.empty()) return false;
+std::int64_t TransformListener::newestAllowedStamp() const {
+  if (options_.max_stamp_ahead == Duration::zero()) return std::numeric_limits<std::int64_t>::max();
+  const std::int64_t clock = toUtime(now());
+  const std::int64_t ahead = options_.max_stamp_ahead.count();
+  return clock > std::numeric_limits<std::int64_t>::max() - ahead
+             ? std::numeric_limits<std::int64_t>::max()
+             : clock + ahead;
+}
+
+// Transforms stamped beyond `newest_allowed`, which the batch's loop refuses, leave the sender's
+// newest stamp as it was.
+bool TransformListener::isStale(const tf_message_t& batch, std::int64_t newest_allowed,
+                                detail::HeardAuthority& sender) {
   std::int64_t batch_newest = std::numeric_limits<std::int64_t>::min();
-  for (const transform_t& t : batch.transforms) batch_newest = std::max(batch_newest, t.utime);
+  for (const transform_t& t : batch.transforms) {
+    if (t.utime <= newest_allowed) batch_newest = std::max(batch_newest, t.utime);
+  }
+  if (batch_newest == std::numeric_limits<std::int64_t>::min()) return false;
   if (!sender.newest) {
     // The first sender a listener hears may feed a buffer fed before (a log replayed again
     // through a new LCM and listener): what the buffer holds on these edges counts as newest.
@@ -280,6 +302,24 @@ void TransformListener::restartHistory(const tf_message_t& batch, std::int64_t b
                                            : "")));
 }
 
+// Whether `message` is stamped beyond `newest_allowed`; if so, it is counted and reported.
+bool TransformListener::stampedAhead(const transform_t& message, std::int64_t newest_allowed,
+                                     const std::string& authority, detail::HeardAuthority& sender) {
+  if (message.utime <= newest_allowed) return false;
+  ++statistics_.stamped_ahead;
+  ++sender.statistics.stamped_ahead;
+  const std::int64_t clock = newest_allowed - options_.max_stamp_ahead.count();
+  report("stamped_ahead",
+         "refused transforms stamped more than " + toString(options_.max_stamp_ahead) +
+             " ahead of this machine's clock (first: '" + message.parent_frame + "' -> '" +
+             message.child_frame + "' from '" + authority + "' at " +
+             toString(fromUtime(message.utime)) + ", " + toString(Duration(message.utime - clock)) +
+             " ahead): stored, it would make its edge refuse its publishers' samples until then. "
+             "If the sender's clock is ahead of this one, synchronize the clocks or raise "
+             "max_stamp_ahead (0: no limit)");
+  return true;
+}
+
 // Whether the frames `message` names that the buffer has not seen (nor `added`, those of the
 // batch so far) fit under max_frames beside `frames`; if so, they join both.
 bool TransformListener::admitNewFrames(const transform_t& message, std::size_t& frames,
@@ -310,7 +350,9 @@ void TransformListener::handleBatch(const tf_message_t& batch, bool is_static,
     return;
   }
   detail::HeardAuthority& sender = hear(batch, is_static);
-  if (!is_static && isStale(batch, sender)) return;
+  const std::int64_t newest_allowed =
+      is_static ? std::numeric_limits<std::int64_t>::max() : newestAllowedStamp();
+  if (!is_static && isStale(batch, newest_allowed, sender)) return;
   // Each transform adds two frames at most, so a batch that cannot reach the limit, as nearly
   // every batch of a running robot, needs no look at its names.
   std::size_t frames = buffer_.frameCount();
@@ -320,6 +362,7 @@ void TransformListener::handleBatch(const tf_message_t& batch, bool is_static,
   if (accepted.size() < batch.transforms.size()) accepted.resize(batch.transforms.size());
   std::size_t count = 0;
   for (const transform_t& message : batch.transforms) {
+    if (stampedAhead(message, newest_allowed, batch.authority, sender)) continue;
     if (may_reach_limit && !admitNewFrames(message, frames, added)) {
       ++statistics_.frame_limit;
       report("frame_limit", "refused new frames beyond the limit of " +

@@ -84,6 +84,7 @@ class ListenerStatistics:
     authorities_followed: Final[int]
     authorities_forgotten: Final[int]
     queue_shortened: Final[int]
+    stamped_ahead: Final[int]
 
 class AuthorityStatistics:
     authority: Final[str]
@@ -96,6 +97,7 @@ class AuthorityStatistics:
     history_resets: Final[int]
     cleared_edges: Final[int]
     resets_held_back: Final[int]
+    stamped_ahead: Final[int]
 
 class Buffer:
     def __init__(
@@ -233,6 +235,7 @@ class TransformListener:
         authority: Optional[str] = None,
         request_statics_at_start: bool = True,
         max_interpolation_gap: float = 0.0,
+        max_stamp_ahead: float = 10.0,
         max_name_bytes: int = 256,
         max_array_elements: int = 65536,
         reporter: Optional[Callable[[str], object]] = None,

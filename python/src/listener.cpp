@@ -29,7 +29,8 @@ std::unique_ptr<Listener> makeListener(
     StrArg static_request_channel, bool static_only, py::handle allowed_authorities,
     IntArg max_frames, IntArg max_authorities, IntArg queue_capacity, IntArg queue_bytes,
     OptionalStrArg authority, bool request_statics_at_start, FloatArg max_interpolation_gap,
-    IntArg max_name_bytes, IntArg max_array_elements, py::handle reporter) {
+    FloatArg max_stamp_ahead, IntArg max_name_bytes, IntArg max_array_elements,
+    py::handle reporter) {
   const BufferPtr buffer = bufferArgument(buffer_arg);
   const ListenerOptions defaults;
   ListenerOptions options;
@@ -46,6 +47,7 @@ std::unique_ptr<Listener> makeListener(
   options.authority = textOr(authority, "authority", defaults.authority);
   options.request_statics_at_start = request_statics_at_start;
   options.max_interpolation_gap = duration(max_interpolation_gap, "max_interpolation_gap");
+  options.max_stamp_ahead = duration(max_stamp_ahead, "max_stamp_ahead");
   options.limits.max_name_bytes = count(max_name_bytes, "max_name_bytes", 1);
   options.limits.max_array_elements = count(max_array_elements, "max_array_elements", 1);
   CallableCellPtr report = callableArgument(reporter, "reporter");
@@ -77,6 +79,7 @@ void bindListener(py::module_& module) {
       py::arg("queue_bytes") = defaults.queue_bytes, py::arg("authority") = py::none(),
       py::arg("request_statics_at_start") = defaults.request_statics_at_start,
       py::arg("max_interpolation_gap") = seconds(defaults.max_interpolation_gap),
+      py::arg("max_stamp_ahead") = seconds(defaults.max_stamp_ahead),
       py::arg("max_name_bytes") = defaults.limits.max_name_bytes,
       py::arg("max_array_elements") = defaults.limits.max_array_elements,
       py::arg("reporter") = py::none(),
@@ -87,7 +90,10 @@ void bindListener(py::module_& module) {
       "queues per channel, fewer while larger messages come than fit in queue_bytes; `authority` "
       "names it in its requests (None: program@host:pid); "
       "request_statics_at_start False leaves request_statics() to the caller; "
-      "max_interpolation_gap (seconds, 0.0 for none) is set on the buffer; max_name_bytes and "
+      "max_interpolation_gap (seconds, 0.0 for none) is set on the buffer; dynamic transforms "
+      "stamped more than max_stamp_ahead seconds ahead of this machine's clock are refused "
+      "(0.0: no limit), as one would make its edge refuse its publishers until then; "
+      "max_name_bytes and "
       "max_array_elements bound incoming messages; `reporter(message)` gets the first message "
       "of each kind the listener refuses (None: printed on stderr), from the listener's thread; "
       "transforms the buffer refuses go to the buffer's reporter (see Buffer).");

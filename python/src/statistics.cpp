@@ -95,6 +95,8 @@ void bindListenerStatistics(py::module_& module) {
              "Senders forgotten to make room for new ones.")
       .field("queue_shortened", &S::queue_shortened,
              "Times large messages made LCM hold fewer waiting on a channel (queue_bytes).")
+      .field("stamped_ahead", &S::stamped_ahead,
+             "Transforms refused as stamped more than max_stamp_ahead ahead of this clock.")
       .finish();
 }
 
@@ -115,6 +117,8 @@ void bindAuthorityStatistics(py::module_& module) {
       .field("cleared_edges", &S::cleared_edges, "Edges whose history those resets dropped.")
       .field("resets_held_back", &S::resets_held_back,
              "Jumps back dropped because it reset within the cache time.")
+      .field("stamped_ahead", &S::stamped_ahead,
+             "Its transforms refused as stamped more than max_stamp_ahead ahead of this clock.")
       .finish();
 }
 

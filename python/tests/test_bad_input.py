@@ -91,6 +91,9 @@ CASES = {
     "listener queue bytes zero": (
         lambda buffer: lcmtf.TransformListener(buffer, "memq://", queue_bytes=0), ValueError,
         "queue_bytes"),
+    "listener stamps ahead negative": (
+        lambda buffer: lcmtf.TransformListener(buffer, "memq://", max_stamp_ahead=-1.0),
+        ValueError, "max_stamp_ahead"),
     "listener authorities a str": (
         lambda buffer: lcmtf.TransformListener(buffer, "memq://", allowed_authorities="me"),
         TypeError, "allowed_authorities"),

@@ -159,6 +159,30 @@ def test_a_transform_the_buffer_refuses_goes_to_the_buffers_reporter(udpm_url):
     assert listener_reports == []
 
 
+def test_a_transform_stamped_an_hour_ahead_is_refused_and_the_edge_keeps_its_publisher(udpm_url):
+    reports = []
+    buffer = lcmtf.Buffer()
+    start = time.time()
+    with lcmtf.TransformListener(buffer, udpm_url, reporter=reports.append) as listener, \
+            lcmtf.TransformBroadcaster(udpm_url, authority="odometry") as odometry, \
+            lcmtf.TransformBroadcaster(udpm_url, authority="clock_ahead") as ahead:
+        odometry.send_transform(lcmtf.TransformStamped("odom", "base", start, [1, 0, 0]))
+        assert buffer.can_transform("odom", "base", start, timeout=5.0)
+        ahead.send_transform(lcmtf.TransformStamped("odom", "base", start + 3600, [-999, 0, 0]))
+        for _ in range(500):
+            if listener.statistics().stamped_ahead:
+                break
+            time.sleep(0.01)
+        odometry.send_transform(lcmtf.TransformStamped("odom", "base", start + 0.01, [2, 0, 0]))
+        assert buffer.can_transform("odom", "base", start + 0.01, timeout=5.0)
+        assert buffer.lookup_transform("odom", "base", 0.0).translation[0] == 2.0
+        assert listener.statistics().stamped_ahead == 1
+        senders = {s.authority: s.stamped_ahead for s in listener.authority_statistics()}
+        assert senders == {"odometry": 0, "clock_ahead": 1}, senders
+    assert buffer.statistics().rejected_total == 0
+    assert len(reports) == 1 and "from 'clock_ahead'" in reports[0], reports
+
+
 def test_an_object_whose_method_is_its_listeners_reporter_is_collected_and_the_listener_stops():
     class Node:
         def __init__(self):

@@ -25,6 +25,10 @@ class ListenerAuthorities;
 struct HeardAuthority;
 }  // namespace detail
 
+/// How far ahead of this machine's clock a listener accepts stamps by default: more than the
+/// clocks of a robot's computers differ, no more than the buffer's default cache time.
+inline constexpr Duration kDefaultMaxStampAhead = std::chrono::seconds(10);
+
 /// What a TransformListener listens to and what it accepts.
 struct ListenerOptions {
   std::string lcm_url;  ///< for the listener's own LCM; "" is LCM's default
@@ -46,6 +50,11 @@ struct ListenerOptions {
   /// When not zero, set on the buffer at start (BufferCore::setMaxInterpolationGap): lookups
   /// between samples further apart, as after lost batches, fail instead of interpolating.
   Duration max_interpolation_gap = Duration::zero();
+  /// Dynamic transforms stamped further than this ahead of this machine's clock when they come
+  /// are refused (stamped_ahead): stored, one would make its edge refuse every sample of its
+  /// publishers until that time, as it holds only the cache time behind its newest sample.
+  /// Zero: no limit (a simulation whose clock runs ahead of the wall clock).
+  Duration max_stamp_ahead = kDefaultMaxStampAhead;
   /// Where the first message of each kind the listener refuses is reported; null: nowhere.
   /// Default: stderr. Transforms the buffer refuses go to the buffer's own reporter
   /// (BufferCore::setErrorReporter). It is called on the listener's thread, which cannot
@@ -67,6 +76,7 @@ struct AuthorityStatistics {
   std::uint64_t history_resets = 0;     ///< its time jumped back for good: its edges cleared
   std::uint64_t cleared_edges = 0;      ///< edges whose dynamic history those resets dropped
   std::uint64_t resets_held_back = 0;   ///< jumps back dropped: it reset within the cache time
+  std::uint64_t stamped_ahead = 0;      ///< transforms refused: stamped beyond max_stamp_ahead
 };
 
 /// What a listener has received and refused since it started.
@@ -88,6 +98,7 @@ struct ListenerStatistics {
   std::uint64_t authorities_followed = 0;   ///< now, at most max_authorities
   std::uint64_t authorities_forgotten = 0;  ///< to make room for new ones (their counts stay here)
   std::uint64_t queue_shortened = 0;  ///< times large messages made LCM hold fewer for a channel
+  std::uint64_t stamped_ahead = 0;    ///< transforms refused: stamped beyond max_stamp_ahead
 };
 
 /// Feeds a Buffer from the TF and TF_STATIC channels, and asks static broadcasters to resend
@@ -130,7 +141,11 @@ class TransformListener {
   bool admitNewFrames(const transform_t& message, std::size_t& frames,
                       std::set<std::string>& added) const;
   detail::HeardAuthority& hear(const tf_message_t& batch, bool is_static);
-  bool isStale(const tf_message_t& batch, detail::HeardAuthority& sender);
+  std::int64_t newestAllowedStamp() const;
+  bool isStale(const tf_message_t& batch, std::int64_t newest_allowed,
+               detail::HeardAuthority& sender);
+  bool stampedAhead(const transform_t& message, std::int64_t newest_allowed,
+                    const std::string& authority, detail::HeardAuthority& sender);
   void restartHistory(const tf_message_t& batch, std::int64_t batch_newest,
                       detail::HeardAuthority& sender);
   std::int64_t newestStored(const tf_message_t& batch) const;
