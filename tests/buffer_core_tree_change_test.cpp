@@ -368,5 +368,43 @@ TEST_F(TreeChanges, RandomChangesKeepEveryLookupRight) {
   }
 }
 
+// In a tree large enough that rebuilding every frame's root path takes a while, an edge that
+// changes parent on every insert and a static edge that changes on every insert put the
+// rebuilds off; lookups meanwhile must follow the tree as it is, not the paths last built.
+TEST(TreeChangesInALargeTree, LookupsFollowEachChangeWhileRebuildsArePutOff) {
+  BufferCore buffer;
+  // A 4-ary tree of frames 0..2999: each static edge 1 m up z, but frame 1's, x_1 m along x.
+  constexpr int kFrames = 3000;
+  const auto name = [](int frame) { return "f" + std::to_string(frame); };
+  const auto up = [](double z) {
+    return Transform(Eigen::Vector3d(0, 0, z), Eigen::Quaterniond::Identity());
+  };
+  for (int frame = 1; frame < kFrames; ++frame) {
+    lcmtf_test::putStatic(buffer, name((frame - 1) / 4), name(frame), up(1.0));
+  }
+  // f2999's root path: 2999 -> 749 -> 187 -> 46 -> 11 -> 2 -> 0, so it hangs below f2.
+  const int deep_under_1 = 1365;  // 1365 -> 341 -> 85 -> 21 -> 5 -> 1 -> 0
+  const int rounds = lcmtf_test::scaledCount(400);
+  for (int k = 0; k < rounds; ++k) {
+    const double x_1 = 0.5 + 0.001 * k;
+    lcmtf_test::putStatic(buffer, name(0), name(1),
+                          Transform(Eigen::Vector3d(x_1, 0, 0), Eigen::Quaterniond::Identity()));
+    const bool under_1 = k % 2 == 0;
+    lcmtf_test::put(buffer, under_1 ? name(1) : name(2), "mover", at(0.001 * k), up(0.25));
+    const Transform mover = buffer.lookupTransform(name(0), "mover", kLatestTime).transform;
+    const Eigen::Vector3d expected_mover =
+        under_1 ? Eigen::Vector3d(x_1, 0, 0.25) : Eigen::Vector3d(0, 0, 1.25);
+    ASSERT_LT((mover.translation - expected_mover).norm(), kTolerance) << "round " << k;
+    const Transform deep =
+        buffer.lookupTransform(name(0), name(deep_under_1), kLatestTime).transform;
+    ASSERT_LT((deep.translation - Eigen::Vector3d(x_1, 0, 5.0)).norm(), kTolerance)
+        << "round " << k;
+    const Transform across = buffer.lookupTransform("mover", name(2999), kLatestTime).transform;
+    const Eigen::Vector3d f0_f2999(0, 0, 6.0);
+    ASSERT_LT((across.translation - (f0_f2999 - expected_mover)).norm(), kTolerance)
+        << "round " << k;
+  }
+}
+
 }  // namespace
 }  // namespace lcmtf

@@ -281,10 +281,13 @@ TEST(TransportProcess, DroppedAndReorderedBatchesStillInterpolateWithinTolerance
 
 // The wire carries any int64 as a stamp; arithmetic on stamps near the ends of the range must
 // neither overflow (a hang, or a jump back seen where there is none) nor stop the listener.
+// With the largest limit on stamps ahead of the clock, which saturates, every stamp is taken.
 TEST(TransportProcess, StampsAtTheEndsOfTheInt64RangeNeitherHangNorLookLikeAJumpBack) {
   lcm::LCM lcm("memq://");
   Buffer buffer;
-  TransformListener listener(buffer, lcm);
+  ListenerOptions options;
+  options.max_stamp_ahead = Duration::max();
+  TransformListener listener(buffer, lcm, options);
   const auto send = [&](std::int64_t stamp) {
     const TransformStamped sample{fromUtime(stamp), "map", "far", Transform::identity()};
     const std::vector<std::uint8_t> bytes = lcmtf_test::encode(makeTfMessage({sample}, "edge"));
@@ -306,6 +309,26 @@ TEST(TransportProcess, StampsAtTheEndsOfTheInt64RangeNeitherHangNorLookLikeAJump
   EXPECT_EQ(listener.statistics().stale_batches, 2u);
   EXPECT_EQ(listener.statistics().history_resets, 1u);
   EXPECT_EQ(toUtime(buffer.getLatestCommonTime("map", "far")), 1);
+}
+
+TEST(TransportProcess, TheLargestStampsAreRefusedAsAheadOfTheClockByDefault) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;
+  ListenerOptions options;
+  std::vector<std::string> reports;
+  options.reporter = [&](const std::string& message) { reports.push_back(message); };
+  TransformListener listener(buffer, lcm, options);
+  using Limits = std::numeric_limits<std::int64_t>;
+  for (const std::int64_t stamp : {Limits::max(), Limits::max() - 1}) {
+    const TransformStamped sample{fromUtime(stamp), "map", "far", Transform::identity()};
+    const std::vector<std::uint8_t> bytes = lcmtf_test::encode(makeTfMessage({sample}, "edge"));
+    listener.handleMessage(bytes.data(), bytes.size(), kTfChannel);
+  }
+  EXPECT_EQ(listener.statistics().stamped_ahead, 2u);
+  EXPECT_EQ(listener.statistics().transforms, 0u);
+  EXPECT_FALSE(buffer.frameExists("far"));
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_NE(reports[0].find("at 9223372036854.775807"), std::string::npos) << reports[0];
 }
 
 // An lcm-logger of our own: writes every message it hears to a log file, and keeps the stamps

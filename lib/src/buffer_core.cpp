@@ -183,11 +183,11 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
     if (!unchanged) {
       if (!was_static || record.cache.staticParent() != parent_id) noteShapeChange(child_id);
       record.cache.setStatic(parent_id, value);
-      if (!known) {
+      if (!known && !static_chains_stale_) {
         // A frame new to the buffer has nothing below it: only its own chain is new.
         continueStaticChain(record, frames_[parent_id], value);
       } else {
-        computeStaticChains();
+        static_chains_stale_ = true;
       }
     }
   } else {
@@ -196,7 +196,7 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
         detail::EdgeSample{stamp, parent_id, value}, cache_time_, most_samples_per_edge_);
     if (outcome == detail::InsertOutcome::kReplaced) ++statistics_.replaced;
     if (outcome == detail::InsertOutcome::kAddedDroppingOldest) ++statistics_.dropped_for_room;
-    if (was_static) computeStaticChains();
+    if (was_static) static_chains_stale_ = true;
     if (was_static || record.cache.newestParent() != parent_before) noteShapeChange(child_id);
   }
   if (record.cache.changesParent() && !changed_parent) ++parent_changing_edges_;
@@ -211,6 +211,28 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
   ++statistics_.inserted;
   if (normalized) ++statistics_.normalized;
   return InsertRejection::kCount;
+}
+
+void BufferCore::Impl::refreshRootPaths() {
+  const bool rebuild = root_paths_stale_ || !root_paths_.canExtendTo(frames_);
+  if (!rebuild && !static_chains_stale_) {
+    if (root_paths_.frameCount() < frames_.size()) root_paths_.extend(frames_);
+    return;
+  }
+  const detail::RefreshBudget::Clock::time_point start = detail::RefreshBudget::Clock::now();
+  if (!refresh_budget_.allows(start)) {
+    root_paths_.invalidate();
+    return;
+  }
+  if (static_chains_stale_) computeStaticChains();
+  static_chains_stale_ = false;
+  if (rebuild) {
+    root_paths_.rebuild(frames_);
+    root_paths_stale_ = false;
+  } else if (root_paths_.frameCount() < frames_.size()) {
+    root_paths_.extend(frames_);
+  }
+  refresh_budget_.spent(start, detail::RefreshBudget::Clock::now());
 }
 
 std::size_t BufferCore::Impl::insert(const TransformStamped* transforms, std::size_t count,

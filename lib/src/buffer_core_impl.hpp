@@ -18,6 +18,7 @@
 #include "name_arena.hpp"
 #include "quick_path.hpp"
 #include "read_mostly_lock.hpp"
+#include "refresh_budget.hpp"
 #include "root_paths.hpp"
 #include "time_cache.hpp"
 
@@ -187,16 +188,10 @@ class BufferCore::Impl {
   /// Recomputes every frame's static_top and the chain up to it after a static edge changed
   /// (exclusive lock).
   void computeStaticChains();
-  /// Brings the root paths up to date (exclusive lock): rebuilt when a frame they know has
-  /// changed its edge, extended when only new frames have come.
-  void refreshRootPaths() {
-    if (root_paths_stale_ || !root_paths_.canExtendTo(frames_)) {
-      root_paths_.rebuild(frames_);
-      root_paths_stale_ = false;
-    } else if (root_paths_.frameCount() < frames_.size()) {
-      root_paths_.extend(frames_);
-    }
-  }
+  /// Brings the static chains and the root paths up to date (exclusive lock): rebuilt when a
+  /// frame they know has changed its edge, extended when only new frames have come. A rebuild
+  /// the budget puts off leaves the paths unusable, and lookups walk, until a later call.
+  void refreshRootPaths();
   /// Notes that `frame`'s edge has changed the tree's shape: a frame the root paths know
   /// means rebuilding them; a newer one gets its path when they are extended.
   void noteShapeChange(FrameId frame) {
@@ -248,6 +243,9 @@ class BufferCore::Impl {
   FrameRecord* last_inserted_ = nullptr;
   RootPaths root_paths_;
   bool root_paths_stale_ = false;
+  // A static edge has changed: the chains are recomputed with the root paths.
+  bool static_chains_stale_ = false;
+  detail::RefreshBudget refresh_budget_;
   // How many dynamic edges hold samples with more than one parent: while there are none, the
   // tree is the same at every time, above the point where two paths meet as well.
   std::size_t parent_changing_edges_ = 0;

@@ -48,6 +48,9 @@ class RootPaths {
   void extend(const FrameTable& frames);
   /// Whether extend() can bring the paths up to date with `frames`.
   bool canExtendTo(const FrameTable& frames) const { return &frames == built_for_; }
+  /// Makes find() fail for every frame until the next rebuild: the paths no longer match the
+  /// tree.
+  void invalidate() { built_for_ = nullptr; }
   /// How many frames have paths (or are known to have none).
   std::size_t frameCount() const { return entries_.size(); }
   /// The path up from `frame` of `frames`, or false when there is none to trust: a frame added
