@@ -16,8 +16,13 @@ void addConnectionOptions(CLI::App& app, TfConnection& connection, bool with_dyn
                    "Channel on which static transforms are asked for again");
 }
 
+void addStampAheadOption(CLI::App& app, TfConnection& connection) {
+  programs::addStampAheadOption(app, connection.max_stamp_ahead_s);
+}
+
 ListenerOptions listenerOptionsFor(const TfConnection& connection, const std::string& program) {
   ListenerOptions listener;
+  listener.max_stamp_ahead = secondsToDuration(connection.max_stamp_ahead_s);
   listener.channel = connection.tf_channel;
   listener.static_channel = connection.static_channel;
   listener.static_request_channel = connection.request_channel;

@@ -123,6 +123,16 @@ CLI::Option* addChannelOption(CLI::App& app, const std::string& name, std::strin
       ->type_name("NAME");
 }
 
+CLI::Option* addStampAheadOption(CLI::App& app, double& seconds) {
+  return app
+      .add_option("--max-stamp-ahead", seconds,
+                  "Transforms stamped further than this ahead of this machine's clock are refused "
+                  "(0: no limit), as one would shut its edge's publisher out until then")
+      ->check(finiteNumberIn(0.0, 1e9))
+      ->type_name("SECONDS")
+      ->capture_default_str();
+}
+
 void addOldName(CLI::App& app, const std::string& name, std::string& value) {
   app.add_option(name, value)->check(nonEmptyName())->group("");
 }

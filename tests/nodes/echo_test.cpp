@@ -66,6 +66,9 @@ TEST(EchoCommandLine, ReadsFramesAndOptions) {
   EXPECT_EQ(parsed.options.connection.lcm_url, "memq://");
   EXPECT_EQ(parsed.options.connection.tf_channel, "MY_TF");
   EXPECT_EQ(parsed.options.connection.static_channel, "TF_STATIC");
+  EXPECT_EQ(parsed.options.connection.max_stamp_ahead_s, 10.0);
+  EXPECT_EQ(parse({"map", "base", "--max-stamp-ahead", "0"}).options.connection.max_stamp_ahead_s,
+            0.0);
 }
 
 TEST(EchoCommandLine, OnceGivesUpAfterFiveSecondsUnlessToldOtherwise) {
@@ -96,6 +99,7 @@ TEST(EchoCommandLine, BadArgumentsAreNamed) {
       {{"map", "base", "--timeout", "-1"}, "--timeout: '-1' is not a number greater than zero"},
       {{"map", "base", "--time", "noon"}, "--time: 'noon' is not a finite number"},
       {{"map", "base", "--tf-channel", ""}, "--tf-channel"},
+      {{"map", "base", "--max-stamp-ahead", "-1"}, "--max-stamp-ahead: '-1' is not a number in"},
       {{"", "base"}, "REFERENCE"},
   };
   for (const auto& [args, named] : cases) {
@@ -207,6 +211,39 @@ TEST(Echo, RunPrintsThePoseOnceItArrives) {
   EXPECT_EQ(status, kExitSuccess) << err.str();
   EXPECT_THAT(out.str(),
               HasSubstr("'camera' in 'base'\n  translation (m)    [0.000, 0.000, 2.000]"));
+}
+
+// A sender whose clock runs a minute ahead of this one: lcmtf-echo says why it refuses its
+// transforms, and prints the pose once told to take any stamp.
+TEST(Echo, TransformsStampedAMinuteAheadAreRefusedSayingWhyUnlessTheLimitIsLifted) {
+  const std::string url = lcmtf_test::privateUdpmUrl("Echo.TransformsStampedAMinuteAhead");
+  std::atomic<bool> sending{true};
+  std::thread sender([&] {
+    TransformBroadcaster broadcaster(url, kTfChannel, "clock_ahead");
+    while (sending) {
+      broadcaster.sendTransform({now() + std::chrono::minutes(1), "odom", "base",
+                                 Transform({1.0, 0.0, 0.0}, {1, 0, 0, 0})});
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  });
+  const std::atomic<bool> stop{false};
+  std::ostringstream out, err;
+  EXPECT_EQ(
+      echoCommand({"--lcm-url", url, "--once", "--timeout", "1", "odom", "base"}, out, err, stop),
+      kExitFailure);
+  EXPECT_EQ(out.str(), "");
+  EXPECT_THAT(err.str(), HasSubstr("refused transforms stamped more than 10.000000 s ahead of "
+                                   "this machine's clock (first: 'odom' -> 'base' from "
+                                   "'clock_ahead'"));
+  std::ostringstream lifted_out, lifted_err;
+  EXPECT_EQ(echoCommand({"--lcm-url", url, "--once", "--timeout", "10", "--max-stamp-ahead", "0",
+                         "odom", "base"},
+                        lifted_out, lifted_err, stop),
+            kExitSuccess)
+      << lifted_err.str();
+  EXPECT_THAT(lifted_out.str(), HasSubstr("'base' in 'odom'"));
+  sending = false;
+  sender.join();
 }
 
 TEST(Echo, RunGivesUpAfterTheTimeoutSayingWhatIsMissing) {

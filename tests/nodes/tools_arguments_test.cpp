@@ -91,6 +91,7 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(BadCall{LCMTF_MONITOR_PATH, {"map"}, "got 1 frame arguments"},
                     BadCall{LCMTF_MONITOR_PATH, {"--duration", "0"}, "--duration"},
                     BadCall{LCMTF_MONITOR_PATH, {"--duration", "forever"}, "--duration"},
+                    BadCall{LCMTF_MONITOR_PATH, {"--max-stamp-ahead", "nan"}, "--max-stamp-ahead"},
                     BadCall{LCMTF_MONITOR_PATH,
                             {"--lcm-url", "bogus://"},
                             "--lcm-url: cannot open LCM at 'bogus://'"}));

@@ -121,6 +121,7 @@ std::optional<int> parseViewerCommandLine(const std::vector<std::string>& args,
       ->check(programs::positiveFiniteNumberUpTo(3600.0))
       ->type_name("SECONDS")
       ->capture_default_str();
+  programs::addStampAheadOption(app, options.max_stamp_ahead_s);
   programs::addChannelOption(app, "--tf-channel", options.tf_channel,
                              "Channel of dynamic transforms");
   programs::addChannelOption(app, "--static-channel", options.static_channel,
@@ -179,6 +180,7 @@ int runViewer(const ViewerOptions& options, std::ostream& out, std::ostream& err
   listening.static_request_channel = options.request_channel;
   listening.authority = authority;
   listening.reporter = report;
+  listening.max_stamp_ahead = secondsToDuration(options.max_stamp_ahead_s);
   TransformListener listener(buffer, listening);
 
   HubSettings settings;

@@ -8,6 +8,7 @@
 
 #include "lcmtf/channels.hpp"
 #include "lcmtf/time.hpp"
+#include "lcmtf/transform_listener.hpp"
 
 namespace lcmtf::viewer {
 
@@ -30,6 +31,7 @@ struct ViewerOptions {
   double update_hz = 30.0;
   double stale_after_s = 1.0;
   double cache_time_s = 10.0;
+  double max_stamp_ahead_s = toSeconds(kDefaultMaxStampAhead);
   std::string web_root;  ///< "" finds the page beside the program
   std::string three_dir;
   double duration_s = 0.0;  ///< 0: until stopped

@@ -23,6 +23,7 @@ struct TfConnection {
   std::string tf_channel = kTfChannel;
   std::string static_channel = kTfStaticChannel;
   std::string request_channel = kTfStaticRequestChannel;
+  double max_stamp_ahead_s = toSeconds(kDefaultMaxStampAhead);  ///< for a listener's buffer
 };
 
 /// Adds --lcm-url, --static-channel, --request-channel and, when `with_dynamic`, --tf-channel.
@@ -43,6 +44,9 @@ int parseOpenAndRun(const std::vector<std::string>& args, const std::string& pro
   if (!lcm) return kExitBadArguments;
   return run(options, *lcm, out, err, stop);
 }
+
+/// Adds --max-stamp-ahead, for the tools that keep a listener's buffer.
+void addStampAheadOption(CLI::App& app, TfConnection& connection);
 
 /// Listener options for the connection's channels, signed by `program`, refusals not reported.
 ListenerOptions listenerOptionsFor(const TfConnection& connection, const std::string& program);

@@ -56,6 +56,9 @@ CLI::Validator nonEmptyName();
 /// An option naming an LCM channel: not empty, its default shown in the help.
 CLI::Option* addChannelOption(CLI::App& app, const std::string& name, std::string& channel,
                               const std::string& help);
+/// --max-stamp-ahead SECONDS, for the programs that keep a listener's buffer
+/// (ListenerOptions::max_stamp_ahead): 0 to 1e9, its default shown in the help.
+CLI::Option* addStampAheadOption(CLI::App& app, double& seconds);
 /// An option under a name the programs once used: it still works, and --help leaves it out.
 void addOldName(CLI::App& app, const std::string& name, std::string& value);
 
