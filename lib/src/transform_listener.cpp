@@ -302,10 +302,10 @@ void TransformListener::restartHistory(const tf_message_t& batch, std::int64_t b
                                            : "")));
 }
 
-// Whether `message` is stamped beyond `newest_allowed`; if so, it is counted and reported.
-bool TransformListener::stampedAhead(const transform_t& message, std::int64_t newest_allowed,
-                                     const std::string& authority, detail::HeardAuthority& sender) {
-  if (message.utime <= newest_allowed) return false;
+// Counts and reports `message`, stamped beyond `newest_allowed`.
+void TransformListener::refuseStampedAhead(const transform_t& message, std::int64_t newest_allowed,
+                                           const std::string& authority,
+                                           detail::HeardAuthority& sender) {
   ++statistics_.stamped_ahead;
   ++sender.statistics.stamped_ahead;
   const std::int64_t clock = newest_allowed - options_.max_stamp_ahead.count();
@@ -317,7 +317,6 @@ bool TransformListener::stampedAhead(const transform_t& message, std::int64_t ne
              " ahead): stored, it would make its edge refuse its publishers' samples until then. "
              "If the sender's clock is ahead of this one, synchronize the clocks or raise "
              "max_stamp_ahead (0: no limit)");
-  return true;
 }
 
 // Whether the frames `message` names that the buffer has not seen (nor `added`, those of the
@@ -362,7 +361,10 @@ void TransformListener::handleBatch(const tf_message_t& batch, bool is_static,
   if (accepted.size() < batch.transforms.size()) accepted.resize(batch.transforms.size());
   std::size_t count = 0;
   for (const transform_t& message : batch.transforms) {
-    if (stampedAhead(message, newest_allowed, batch.authority, sender)) continue;
+    if (message.utime > newest_allowed) {
+      refuseStampedAhead(message, newest_allowed, batch.authority, sender);
+      continue;
+    }
     if (may_reach_limit && !admitNewFrames(message, frames, added)) {
       ++statistics_.frame_limit;
       report("frame_limit", "refused new frames beyond the limit of " +

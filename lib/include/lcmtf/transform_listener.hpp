@@ -144,8 +144,8 @@ class TransformListener {
   std::int64_t newestAllowedStamp() const;
   bool isStale(const tf_message_t& batch, std::int64_t newest_allowed,
                detail::HeardAuthority& sender);
-  bool stampedAhead(const transform_t& message, std::int64_t newest_allowed,
-                    const std::string& authority, detail::HeardAuthority& sender);
+  void refuseStampedAhead(const transform_t& message, std::int64_t newest_allowed,
+                          const std::string& authority, detail::HeardAuthority& sender);
   void restartHistory(const tf_message_t& batch, std::int64_t batch_newest,
                       detail::HeardAuthority& sender);
   std::int64_t newestStored(const tf_message_t& batch) const;
