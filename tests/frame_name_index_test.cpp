@@ -4,7 +4,9 @@
 
 #include <deque>
 #include <random>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace lcmtf::detail {
 namespace {
@@ -75,6 +77,22 @@ TEST(NameIndexGaps, AnIdSkippedBelowAnotherHasAnEmptyName) {
   index.insert("odom", 3);
   EXPECT_TRUE(index.nameOf(2).empty());
   EXPECT_EQ(index.nameOf(3), "odom");
+}
+
+// Names worked out to land on one slot of an index (here, of one with 65,536 slots, as 10,000
+// frames take) land on many slots of another: a peer cannot craft names that crowd every index.
+TEST(NameIndexSeeds, NamesThatShareASlotInOneIndexSpreadInAnother) {
+  constexpr std::uint64_t kMask = 0xffff;
+  const FrameNameIndex crafted_against;
+  std::vector<std::string> crowd;
+  for (int i = 0; crowd.size() < 12; ++i) {
+    std::string name = "frame_" + std::to_string(i);
+    if ((crafted_against.hashOf(name) & kMask) == 0x1234) crowd.push_back(std::move(name));
+  }
+  const FrameNameIndex other;
+  std::set<std::uint64_t> slots;
+  for (const std::string& name : crowd) slots.insert(other.hashOf(name) & kMask);
+  EXPECT_GE(slots.size(), 10u);
 }
 
 }  // namespace
