@@ -5,6 +5,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "name_hash.hpp"
 #include "name_words.hpp"
 
 namespace lcmtf::detail {
@@ -67,7 +68,7 @@ class AuthorityTable {
   }
 
   std::vector<Entry> entries_;
-  std::unordered_map<std::string, std::uint32_t> ids_;
+  std::unordered_map<std::string, std::uint32_t, NameHash> ids_;
   std::vector<std::uint32_t> free_;
   std::uint32_t last_ = 0;
 };

@@ -1,13 +1,11 @@
 #pragma once
 
-#include <chrono>
 #include <cstdint>
-#include <exception>
-#include <random>
 #include <string_view>
 #include <vector>
 
 #include "large_arrays.hpp"
+#include "name_hash.hpp"
 #include "name_words.hpp"
 #include "time_cache.hpp"
 
@@ -17,8 +15,7 @@ namespace lcmtf::detail {
 /// lookup by name starts here. A slot holds only part of the name's hash and the id, 8 bytes,
 /// so that more of the table stays in the nearer caches; the names, which must outlive the
 /// index, are reached through the id. Ids are small and dense, as frames are numbered. Each
-/// index seeds its hash at random, so that nobody can work out names that land in one run of
-/// slots and make every lookup among them walk it.
+/// index keys its hash at random (NameHash).
 class FrameNameIndex {
  public:
   FrameId find(std::string_view name) const {
@@ -33,7 +30,7 @@ class FrameNameIndex {
     }
   }
 
-  FrameNameIndex() : names_(1), seeds_(seedsFrom(randomSeed())) {}
+  FrameNameIndex() : names_(1) {}
 
   /// The name of frame `id`: empty for kNoFrame, and for an id not inserted below the highest.
   std::string_view nameOf(FrameId id) const { return names_[id]; }
@@ -47,62 +44,10 @@ class FrameNameIndex {
     ++count_;
   }
 
-  // Independent multiplies of 8-byte words (overlapping where the size is not a multiple of 8,
-  // so no word is read byte by byte), so that a name's words mix at once rather than in
-  // sequence. Names of up to 32 bytes, nearly all of them, take a fixed number of words.
-  std::uint64_t hashOf(std::string_view name) const {
-    const std::size_t size = name.size();
-    const char* bytes = name.data();
-    const std::uint64_t hash = size * kMultiplier;
-    if (size <= 8) return finish(hash + mix(shortNameWord(bytes, size), seeds_.first));
-    const std::uint64_t ends =
-        mix(nameWord(bytes), seeds_.first) + mix(nameWord(bytes + size - 8), seeds_.last);
-    if (size <= 16) return finish(hash + ends);
-    if (size <= 32) {
-      return finish(hash + ends + mix(nameWord(bytes + 8), seeds_.second) +
-                    mix(nameWord(bytes + size - 16), seeds_.second_last));
-    }
-    // Each word's seed depends on its place, so that words trading places change the hash.
-    std::uint64_t middle = 0;
-    for (std::size_t offset = 8; offset + 8 < size; offset += 8) {
-      middle += mix(nameWord(bytes + offset), seeds_.first + offset * kMultiplier);
-    }
-    return finish(hash + ends + middle);
-  }
+  /// The hash this index places `name` by.
+  std::uint64_t hashOf(std::string_view name) const { return hash_(name); }
 
  private:
-  static constexpr std::uint64_t kMultiplier = 0x9e3779b97f4a7c15ull;
-
-  // The seed of each word a name of up to 32 bytes is read as, by its place.
-  struct Seeds {
-    std::uint64_t first;
-    std::uint64_t last;
-    std::uint64_t second;
-    std::uint64_t second_last;
-  };
-  static Seeds seedsFrom(std::uint64_t seed) {
-    return Seeds{seed, ~seed, seed + kMultiplier, seed - kMultiplier};
-  }
-  static std::uint64_t randomSeed() {
-    try {
-      std::random_device device;
-      return (std::uint64_t{device()} << 32) ^ device();
-    } catch (const std::exception&) {
-      // No source of randomness: the time at least differs from run to run.
-      return finish(
-          static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()));
-    }
-  }
-
-  static std::uint64_t finish(std::uint64_t hash) {
-    hash = (hash ^ (hash >> 32)) * 0xbf58476d1ce4e5b9ull;
-    return hash ^ (hash >> 31);
-  }
-  static std::uint64_t mix(std::uint64_t word, std::uint64_t seed) {
-    const std::uint64_t product = (word ^ seed) * 0x9e3779b97f4a7c15ull;
-    return product ^ (product >> 29);
-  }
-
   // The hash's high half: its low bits pick the slot.
   static std::uint32_t tagOf(std::uint64_t hash) { return static_cast<std::uint32_t>(hash >> 32); }
 
@@ -131,7 +76,7 @@ class FrameNameIndex {
   std::vector<std::string_view, LargeArrayAllocator<std::string_view>> names_;  // by id, from 0
   std::size_t mask_ = 0;
   std::size_t count_ = 0;
-  Seeds seeds_;
+  NameHash hash_;
 };
 
 }  // namespace lcmtf::detail

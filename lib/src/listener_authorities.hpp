@@ -12,6 +12,7 @@
 
 #include "lcmtf/sequence_tracker.hpp"
 #include "lcmtf/transform_listener.hpp"
+#include "name_hash.hpp"
 
 namespace lcmtf::detail {
 
@@ -97,7 +98,7 @@ class ListenerAuthorities {
   std::list<HeardAuthority> established_;  // the most recently heard first
   std::list<HeardAuthority> probation_;    // the most recently heard first
   // Keys view the names held in the lists' nodes, which never move.
-  std::unordered_map<std::string_view, Place> index_;
+  std::unordered_map<std::string_view, Place, NameHash> index_;
 };
 
 }  // namespace lcmtf::detail
