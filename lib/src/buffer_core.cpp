@@ -215,24 +215,18 @@ InsertRejection BufferCore::Impl::store(const TransformStamped& transform, const
 
 void BufferCore::Impl::refreshRootPaths() {
   const bool rebuild = root_paths_stale_ || !root_paths_.canExtendTo(frames_);
-  if (!rebuild && !static_chains_stale_) {
-    if (root_paths_.frameCount() < frames_.size()) root_paths_.extend(frames_);
-    return;
+  if (rebuild || static_chains_stale_) {
+    const detail::RefreshBudget::Clock::time_point start = detail::RefreshBudget::Clock::now();
+    if (!refresh_budget_.allows(start)) {
+      root_paths_.invalidate();
+      return;
+    }
+    if (static_chains_stale_) computeStaticChains();
+    if (rebuild) root_paths_.rebuild(frames_);
+    static_chains_stale_ = root_paths_stale_ = false;
+    refresh_budget_.spent(start, detail::RefreshBudget::Clock::now());
   }
-  const detail::RefreshBudget::Clock::time_point start = detail::RefreshBudget::Clock::now();
-  if (!refresh_budget_.allows(start)) {
-    root_paths_.invalidate();
-    return;
-  }
-  if (static_chains_stale_) computeStaticChains();
-  static_chains_stale_ = false;
-  if (rebuild) {
-    root_paths_.rebuild(frames_);
-    root_paths_stale_ = false;
-  } else if (root_paths_.frameCount() < frames_.size()) {
-    root_paths_.extend(frames_);
-  }
-  refresh_budget_.spent(start, detail::RefreshBudget::Clock::now());
+  if (root_paths_.frameCount() < frames_.size()) root_paths_.extend(frames_);
 }
 
 std::size_t BufferCore::Impl::insert(const TransformStamped* transforms, std::size_t count,

@@ -233,11 +233,8 @@ detail::HeardAuthority& TransformListener::hear(const tf_message_t& batch, bool 
 
 std::int64_t TransformListener::newestAllowedStamp() const {
   if (options_.max_stamp_ahead == Duration::zero()) return std::numeric_limits<std::int64_t>::max();
-  const std::int64_t clock = toUtime(now());
-  const std::int64_t ahead = options_.max_stamp_ahead.count();
-  return clock > std::numeric_limits<std::int64_t>::max() - ahead
-             ? std::numeric_limits<std::int64_t>::max()
-             : clock + ahead;
+  // The limit is not negative (checked()), so its negation cannot overflow.
+  return detail::saturatingSubtract(toUtime(now()), -options_.max_stamp_ahead.count());
 }
 
 // Transforms stamped beyond `newest_allowed`, which the batch's loop refuses, leave the sender's

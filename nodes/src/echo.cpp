@@ -261,7 +261,7 @@ std::optional<int> parseEchoCommandLine(const std::vector<std::string>& args, Ec
           ->check(positiveFiniteNumber())
           ->type_name("SECONDS");
   addConnectionOptions(*app, options.connection);
-  addStampAheadOption(*app, options.connection);
+  addStampAheadOption(*app, options.connection.max_stamp_ahead_s);
   if (auto status = parseCommandLine(*app, args, out, err)) return status;
   try {
     if (!time_text.empty()) options.time = parseEchoTime(time_text);

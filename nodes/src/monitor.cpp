@@ -155,7 +155,7 @@ std::optional<int> parseMonitorCommandLine(const std::vector<std::string>& args,
   app->add_flag("-c,--continuous", options.continuous,
                 "Keep listening and print a fresh report every --duration seconds");
   addConnectionOptions(*app, options.connection);
-  addStampAheadOption(*app, options.connection);
+  addStampAheadOption(*app, options.connection.max_stamp_ahead_s);
   if (auto status = parseCommandLine(*app, args, out, err)) return status;
   if (!frames.empty() && frames.size() != 2) {
     return reportBadArguments(*app,

@@ -16,10 +16,6 @@ void addConnectionOptions(CLI::App& app, TfConnection& connection, bool with_dyn
                    "Channel on which static transforms are asked for again");
 }
 
-void addStampAheadOption(CLI::App& app, TfConnection& connection) {
-  programs::addStampAheadOption(app, connection.max_stamp_ahead_s);
-}
-
 ListenerOptions listenerOptionsFor(const TfConnection& connection, const std::string& program) {
   ListenerOptions listener;
   listener.max_stamp_ahead = secondsToDuration(connection.max_stamp_ahead_s);

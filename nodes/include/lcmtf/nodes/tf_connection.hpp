@@ -45,9 +45,6 @@ int parseOpenAndRun(const std::vector<std::string>& args, const std::string& pro
   return run(options, *lcm, out, err, stop);
 }
 
-/// Adds --max-stamp-ahead, for the tools that keep a listener's buffer.
-void addStampAheadOption(CLI::App& app, TfConnection& connection);
-
 /// Listener options for the connection's channels, signed by `program`, refusals not reported.
 ListenerOptions listenerOptionsFor(const TfConnection& connection, const std::string& program);
 
