@@ -1,6 +1,7 @@
 #include "lcmtf/transform_listener.hpp"
 
 #include <algorithm>
+#include <iostream>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -148,10 +149,29 @@ std::vector<AuthorityStatistics> TransformListener::authorityStatistics() const 
 
 void TransformListener::report(const std::string& kind, const std::string& message) {
   bool& reported = reported_[kind];
-  if (reported) return;
+  if (reported || !options_.reporter) return;
   reported = true;
-  if (options_.reporter) {
-    options_.reporter(printable(message) + " (reported once; later ones are only counted)");
+  unsent_reports_.push_back(printable(message) + " (reported once; later ones are only counted)");
+}
+
+// The reporter is called without the lock: it may ask for the statistics, or wait for a
+// thread (Python's GIL holder) that is asking for them.
+void TransformListener::sendReports() noexcept {
+  std::vector<std::string> reports;
+  {
+    std::lock_guard<std::mutex> guard(mutex_);
+    if (unsent_reports_.empty()) return;
+    reports.swap(unsent_reports_);
+  }
+  for (const std::string& message : reports) {
+    try {
+      options_.reporter(message);
+    } catch (const std::exception& e) {
+      std::cerr << "lcmtf listener: its reporter threw (" << e.what() << ") on: " << message
+                << '\n';
+    } catch (...) {
+      std::cerr << "lcmtf listener: its reporter threw on: " << message << '\n';
+    }
   }
 }
 
@@ -170,7 +190,7 @@ void TransformListener::onMessage(const lcm::ReceiveBuffer* buffer, const std::s
   // Nothing may escape into LCM's C dispatch loop.
   try {
     fitQueue(channel, buffer->data_size);
-    handleMessage(buffer->data, buffer->data_size, channel);
+    handleEncoded(buffer->data, buffer->data_size, channel);
   } catch (const std::exception& e) {
     std::lock_guard<std::mutex> guard(mutex_);
     ++statistics_.malformed;
@@ -180,9 +200,16 @@ void TransformListener::onMessage(const lcm::ReceiveBuffer* buffer, const std::s
     ++statistics_.malformed;
     report("exception", "unknown error while handling a message on " + channel);
   }
+  sendReports();
 }
 
 void TransformListener::handleMessage(const void* data, std::size_t size,
+                                      const std::string& channel) {
+  handleEncoded(data, size, channel);
+  sendReports();
+}
+
+void TransformListener::handleEncoded(const void* data, std::size_t size,
                                       const std::string& channel) {
   ScratchLease lease(*this);
   Scratch& scratch = lease.scratch();
@@ -290,7 +317,7 @@ void TransformListener::restartHistory(const tf_message_t& batch, std::int64_t b
   if (sender.reset_reported || resets_reported_ >= kResetsReported || !options_.reporter) return;
   sender.reset_reported = true;
   ++resets_reported_;
-  options_.reporter(printable(
+  unsent_reports_.push_back(printable(
       "time jumped back by more than the cache time on '" + batch.authority +
       "' (restarted, or a log played again?): cleared the dynamic history of the " +
       std::to_string(cleared) + " edges it sent last; static transforms and other senders' " +

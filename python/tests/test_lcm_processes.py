@@ -144,6 +144,21 @@ def test_listener_reports_a_refusal_to_a_python_callable(udpm_url):
     assert not buffer.frame_exists("base")
 
 
+def test_a_reporter_may_ask_its_listener_for_the_statistics(udpm_url):
+    holder, seen = {}, []
+    done = threading.Event()
+
+    def report(message):
+        seen.append(holder["listener"].statistics().unauthorized)
+        done.set()
+
+    holder["listener"] = lcmtf.TransformListener(lcmtf.Buffer(), udpm_url,
+                                                 allowed_authorities=["trusted"], reporter=report)
+    with holder["listener"]:
+        refuse_intruders_until(udpm_url, done)
+    assert seen == [1]
+
+
 def test_a_transform_the_buffer_refuses_goes_to_the_buffers_reporter(udpm_url):
     listener_reports, buffer_reports = [], []
     buffer = lcmtf.Buffer(reporter=buffer_reports.append)

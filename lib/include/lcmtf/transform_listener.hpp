@@ -57,8 +57,9 @@ struct ListenerOptions {
   Duration max_stamp_ahead = kDefaultMaxStampAhead;
   /// Where the first message of each kind the listener refuses is reported; null: nowhere.
   /// Default: stderr. Transforms the buffer refuses go to the buffer's own reporter
-  /// (BufferCore::setErrorReporter). It is called on the listener's thread, which cannot
-  /// destroy the listener (see onItsThread).
+  /// (BufferCore::setErrorReporter). It is called on the thread that handled the message (the
+  /// listener's own, which cannot destroy the listener: see onItsThread), after the listener's
+  /// lock is released, so it may call statistics(). What it throws is written to stderr.
   std::function<void(const std::string& message)> reporter = [](const std::string& message) {
     std::cerr << "lcmtf listener: " << message << '\n';
   };
@@ -150,6 +151,8 @@ class TransformListener {
                       detail::HeardAuthority& sender);
   std::int64_t newestStored(const tf_message_t& batch) const;
   void report(const std::string& kind, const std::string& message);
+  void sendReports() noexcept;
+  void handleEncoded(const void* data, std::size_t size, const std::string& channel);
 
   Buffer& buffer_;
   ListenerOptions options_;
@@ -164,6 +167,7 @@ class TransformListener {
   bool heard_dynamic_ = false;
   std::size_t resets_reported_ = 0;
   std::map<std::string, bool> reported_;
+  std::vector<std::string> unsent_reports_;  // one per kind reported at most, and 10 resets
 
   // What handling a message decodes into, kept from one message to the next so that a stream
   // of batches reuses its strings and arrays; taken by one call at a time (ScratchLease).
