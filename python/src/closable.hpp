@@ -41,20 +41,23 @@ class Closable {
     if (!object_) throw py::value_error("the " + name_ + " is closed");
     return *object_;
   }
-  /// Stops it with the GIL released: its thread may be waiting for the GIL to call back.
-  /// Closed from its own thread (inside its reporter), it is stopped from another one, once the
-  /// call back returns.
+  /// Taken out with the GIL held, so that no other thread is using it and any that calls it
+  /// next is told it is closed; then stopped with the GIL released, as its thread may be waiting
+  /// for the GIL to call back. Closed from its own thread (inside its reporter), it is stopped
+  /// from another one, once the call back returns.
   void close() {
+    std::unique_ptr<Object> object = std::move(object_);
+    if (!object) return;
     py::gil_scoped_release release;
-    if (object_ && onItsThread(*object_)) {
-      closeLater([object = std::shared_ptr<Object>(std::move(object_)),
+    if (onItsThread(*object)) {
+      closeLater([object = std::shared_ptr<Object>(std::move(object)),
                   keep_alive = std::move(keep_alive_)]() mutable {
         object.reset();
         keep_alive.reset();
       });
       return;
     }
-    object_.reset();
+    object.reset();
   }
 
  private:

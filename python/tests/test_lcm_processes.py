@@ -1,6 +1,7 @@
 """lcmtf in Python and C++ programs talk over udpm (ttl=0, a port of each test's own): a Python
 listener hears C++ publishers, and a C++ listener hears Python broadcasters."""
 
+import functools
 import gc
 import math
 import re
@@ -126,6 +127,37 @@ def test_a_listener_closed_from_inside_its_own_reporter_stops(udpm_url, how):
             holder["listener"].statistics()
     else:
         assert "listener" not in holder
+
+
+@pytest.mark.parametrize("kind", ["listener", "broadcaster", "static broadcaster"])
+def test_closed_while_another_thread_uses_it_that_thread_is_told_it_is_closed(udpm_url, kind):
+    for _ in range(20):
+        if kind == "listener":
+            closable = lcmtf.TransformListener(lcmtf.Buffer(), udpm_url)
+            use = closable.statistics
+        else:
+            broadcaster = (lcmtf.TransformBroadcaster if kind == "broadcaster"
+                           else lcmtf.StaticTransformBroadcaster)
+            closable = broadcaster(udpm_url)
+            transform = lcmtf.TransformStamped("map", "base", time.time())
+            use = functools.partial(closable.send_transform, transform)
+        errors = []
+        using = threading.Event()
+
+        def keep_using():
+            try:
+                while True:
+                    use()
+                    using.set()
+            except ValueError as error:
+                errors.append(str(error))
+
+        user = threading.Thread(target=keep_using)
+        user.start()
+        assert using.wait(10.0)
+        closable.close()
+        user.join(10.0)
+        assert not user.is_alive() and len(errors) == 1 and "is closed" in errors[0], errors
 
 
 def test_listener_reports_a_refusal_to_a_python_callable(udpm_url):
