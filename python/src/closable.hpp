@@ -7,7 +7,7 @@
 
 #include <memory>
 #include <string>
-#include "later_close.hpp"
+#include "closes_at_exit.hpp"
 #include "lcmtf/transform_listener.hpp"
 #include "python_callback.hpp"
 
@@ -28,7 +28,10 @@ class Closable {
   /// `keep_alive` lives as long as `object` (what it refers to, such as a listener's buffer).
   Closable(std::unique_ptr<Object> object, std::string name,
            std::shared_ptr<const void> keep_alive = nullptr)
-      : keep_alive_(std::move(keep_alive)), name_(std::move(name)), object_(std::move(object)) {}
+      : keep_alive_(std::move(keep_alive)),
+        name_(std::move(name)),
+        object_(std::move(object)),
+        at_exit_(closeAtExit([this] { close(); })) {}
   ~Closable() { close(); }
   Closable(const Closable&) = delete;
   Closable& operator=(const Closable&) = delete;
@@ -48,6 +51,7 @@ class Closable {
   void close() {
     std::unique_ptr<Object> object = std::move(object_);
     if (!object) return;
+    forgetCloseAtExit(at_exit_);
     py::gil_scoped_release release;
     if (onItsThread(*object)) {
       closeLater([object = std::shared_ptr<Object>(std::move(object)),
@@ -64,6 +68,7 @@ class Closable {
   std::shared_ptr<const void> keep_alive_;
   std::string name_;
   std::unique_ptr<Object> object_;
+  const std::uint64_t at_exit_;
   CallableCellPtr callback_;
 };
 
@@ -73,7 +78,8 @@ void defineClose(py::class_<Closable<Object>>& python_class) {
   python_class
       .def("close", &Closable<Object>::close,
            "Stops it and frees its LCM; it cannot be used afterwards. Called at the end of a "
-           "with block, and by the garbage collector otherwise.")
+           "with block, by the garbage collector otherwise, and at the interpreter's exit "
+           "(after the functions registered with atexit later than lcmtf was imported).")
       .def("__enter__", [](py::object self) { return self; })
       .def("__exit__", [](Closable<Object>& self, const py::args&) { self.close(); });
 }
