@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Builds lcmtf and runs the tests: every test in a normal build (the tf2 agreement tests
 # included: ROS tf2 is installed for them; the Python package's tests run here only, as the
-# sanitizer builds leave the package out), the concurrency tests under ThreadSanitizer, short
-# libFuzzer runs over decode-and-insert, robot descriptions, static transform files and the
-# viewer's page messages beside every unit test again in an ASan+UBSan build, where each quick
-# lookup is also checked against the walk.
+# sanitizer builds leave the package out), the concurrency tests and the listener's reporter
+# tests under ThreadSanitizer, short libFuzzer runs over decode-and-insert, robot descriptions,
+# static transform files and the viewer's page messages beside every unit test again in an
+# ASan+UBSan build, where each quick lookup is also checked against the walk.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh --tests
@@ -18,8 +18,8 @@ ctest --test-dir build/release -j"$jobs" --output-on-failure
 cmake -S . -B build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLCMTF_SANITIZE=thread \
   -DLCMTF_BUILD_JAVA=OFF -DLCMTF_BUILD_EXAMPLES=OFF -DLCMTF_BUILD_BENCHMARKS=OFF
 cmake --build build/tsan -j"$jobs" --target buffer_core_concurrency_test buffer_core_realtime_test \
-  read_mostly_lock_test transform_listener_test
-ctest --test-dir build/tsan -R "Concurrency|Realtime" --output-on-failure
+  read_mostly_lock_test transform_listener_test listener_reporter_test
+ctest --test-dir build/tsan -R "Concurrency|Realtime|ListenerReporter" --output-on-failure
 
 # One clang build serves the fuzzers and the unit tests under ASan+UBSan, at -O1 so that the
 # sanitized tests run at a useful speed.
