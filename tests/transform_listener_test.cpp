@@ -5,6 +5,7 @@
 
 #include <cstring>
 #include <new>
+#include <stdexcept>
 #include <thread>
 
 #include "lcmtf/static_transform_broadcaster.hpp"
@@ -717,6 +718,22 @@ TEST(TransformListener, ANegativeLimitOnStampsAheadIsRefused) {
     ADD_FAILURE() << "a negative max_stamp_ahead was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_THAT(e.what(), HasSubstr("max_stamp_ahead must not be negative"));
+  }
+}
+
+// LCM's udpm self test fails on port 0, which its test datagram never comes back from, after
+// waiting 10 s for it; LCM's C++ side still returns a subscription.
+TEST(TransformListener, AnLcmThatCannotReceiveMakesTheListenerThrowNamingTheChannel) {
+  lcm::LCM lcm("udpm://239.255.76.67:0?ttl=0");
+  ASSERT_TRUE(lcm.good());
+  Buffer buffer;
+  ListenerOptions options;
+  options.request_statics_at_start = false;
+  try {
+    TransformListener listener(buffer, lcm, options);
+    ADD_FAILURE() << "a listener was made on an LCM that cannot subscribe";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("LCM cannot subscribe to TF_STATIC: it cannot receive"));
   }
 }
 

@@ -1,9 +1,25 @@
 #include "lcmtf/subscription_budget.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <utility>
 
 namespace lcmtf {
+
+namespace {
+
+// LCM keeps what its C side returned, null when it could not subscribe, in a protected member.
+struct SubscriptionAccess : lcm::Subscription {
+  static bool made(const lcm::Subscription& subscription) {
+    return subscription.*(&SubscriptionAccess::c_subs) != nullptr;
+  }
+};
+
+}  // namespace
+
+bool subscriptionMade(const lcm::Subscription* subscription) {
+  return subscription && SubscriptionAccess::made(*subscription);
+}
 
 SubscriptionBudget::SubscriptionBudget(lcm::Subscription* subscription, std::string channel,
                                        std::size_t budget_bytes, int most_messages)
@@ -12,6 +28,12 @@ SubscriptionBudget::SubscriptionBudget(lcm::Subscription* subscription, std::str
       budget_bytes_(budget_bytes),
       most_messages_(most_messages),
       capacity_(most_messages) {
+  if (!subscriptionMade(subscription_)) {
+    throw std::runtime_error(
+        "LCM cannot subscribe to " + channel_ +
+        ": it cannot receive (with udpm, its self test failed: no route brings multicast back "
+        "to this machine, or the port cannot be bound)");
+  }
   subscription_->setQueueCapacity(most_messages);
 }
 

@@ -7,6 +7,7 @@
 #include <ostream>
 
 #include "lcmtf/programs/command_line.hpp"
+#include "lcmtf/subscription_budget.hpp"
 
 namespace lcmtf::programs {
 
@@ -19,10 +20,35 @@ std::string describeLcmUrl(const std::string& lcm_url) {
   return lcmBuiltInDefaultUrl();
 }
 
+namespace {
+
+// What the URL a failure names came from.
+std::string urlSource(const std::string& lcm_url) {
+  if (!lcm_url.empty()) return "--lcm-url";
+  const char* from_environment = std::getenv("LCM_DEFAULT_URL");
+  if (from_environment && *from_environment) return "$LCM_DEFAULT_URL";
+  return "LCM's default URL";
+}
+
+void ignoreMessage(const lcm::ReceiveBuffer*, const std::string&, void*) {}
+
+}  // namespace
+
 std::unique_ptr<lcm::LCM> openLcm(const std::string& lcm_url) {
   auto lcm = std::make_unique<lcm::LCM>(lcm_url);
+  const std::string url = describeLcmUrl(lcm_url);
   if (!lcm->good()) {
-    throw CommandLineError("--lcm-url: cannot open LCM at '" + describeLcmUrl(lcm_url) + "'");
+    throw CommandLineError(urlSource(lcm_url) + ": cannot open LCM at '" + url + "'");
+  }
+  // Every program subscribes (a publisher to requests to resend): find out now, once.
+  lcm::Subscription* probe =
+      lcm->subscribeFunction<void*>("LCMTF_RECEIVE_CHECK", &ignoreMessage, nullptr);
+  const bool receives = subscriptionMade(probe);
+  lcm->unsubscribe(probe);
+  if (!receives) {
+    throw CommandLineError(urlSource(lcm_url) + ": LCM at '" + url +
+                           "' cannot receive (with udpm, its self test failed: no route brings "
+                           "multicast back to this machine, or the port cannot be bound)");
   }
   return lcm;
 }

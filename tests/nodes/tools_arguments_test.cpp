@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,25 @@ TEST_P(BadArgument, ExitsTwoWithAMessageNamingIt) {
   EXPECT_THAT(tool.stderrText(), HasSubstr(program + ": "));
   EXPECT_THAT(tool.stderrText(), HasSubstr(call.named));
   EXPECT_EQ(tool.stdoutText(), "");
+}
+
+// LCM's udpm self test fails on port 0, which its test datagram never comes back from, after
+// waiting 10 s for it.
+TEST(ToolsLcm, AnLcmThatCannotReceiveExitsTwoSayingSo) {
+  const std::string url = "udpm://239.255.76.67:0?ttl=0";
+  ChildProcess echo(LCMTF_ECHO_PATH, {"map", "base", "--once", "--lcm-url", url});
+  ASSERT_EQ(echo.waitForExit(60s), std::optional<int>(2)) << echo.stderrText();
+  EXPECT_THAT(echo.stderrText(),
+              HasSubstr("lcmtf-echo: --lcm-url: LCM at '" + url + "' cannot receive"));
+}
+
+TEST(ToolsLcm, AUrlFromTheEnvironmentThatCannotBeOpenedIsSaidToComeFromThere) {
+  setenv("LCM_DEFAULT_URL", "bogus://", 1);
+  ChildProcess echo(LCMTF_ECHO_PATH, {"map", "base"});
+  unsetenv("LCM_DEFAULT_URL");
+  ASSERT_EQ(echo.waitForExit(10s), std::optional<int>(2)) << echo.stderrText();
+  EXPECT_THAT(echo.stderrText(),
+              HasSubstr("lcmtf-echo: $LCM_DEFAULT_URL: cannot open LCM at 'bogus://'"));
 }
 
 const std::vector<std::string> kPose{"0", "0", "0", "0", "0", "0", "base", "camera"};

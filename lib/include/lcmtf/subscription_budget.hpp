@@ -22,12 +22,17 @@ inline constexpr std::size_t kDefaultQueueBytes = std::size_t{64} << 20;
 /// least one and at most `most_messages` (a count of 0 or less, which LCM gives its own meaning,
 /// is left as it is). fit() is called from the subscription's handler, on the thread that
 /// handles the LCM.
+/// Whether LCM made `subscription`: its C++ side returns one even when its C side could not
+/// subscribe, as when the LCM cannot receive (a udpm LCM whose self test failed).
+bool subscriptionMade(const lcm::Subscription* subscription);
+
 class SubscriptionBudget {
  public:
   using Clock = std::chrono::steady_clock;
   static constexpr Clock::duration kWindow = std::chrono::seconds(10);
 
-  /// Sets `most_messages` on `subscription` (to `channel`) now.
+  /// Sets `most_messages` on `subscription` (to `channel`) now. A subscription LCM could not
+  /// make (it cannot receive) throws std::runtime_error naming the channel.
   SubscriptionBudget(lcm::Subscription* subscription, std::string channel, std::size_t budget_bytes,
                      int most_messages);
 

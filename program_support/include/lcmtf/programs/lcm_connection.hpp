@@ -17,7 +17,8 @@ std::string describeLcmUrl(const std::string& lcm_url);
 const char* lcmBuiltInDefaultUrl();
 
 /// An LCM on `lcm_url`; CommandLineError "--lcm-url: cannot open LCM at 'URL'" when it cannot
-/// be opened.
+/// be opened, or "... cannot receive" when it cannot subscribe (naming $LCM_DEFAULT_URL or
+/// LCM's default URL instead of --lcm-url when `lcm_url` is empty).
 std::unique_ptr<lcm::LCM> openLcm(const std::string& lcm_url);
 
 /// openLcm, with a failure reported on `err` as "program: message"; null when it failed (the
