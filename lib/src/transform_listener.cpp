@@ -110,9 +110,16 @@ void TransformListener::subscribe() {
   }
   std::vector<std::string> channels{options_.static_channel};
   if (!options_.static_only) channels.push_back(options_.channel);
-  for (const std::string& channel : channels) {
-    lcm::Subscription* subscription = lcm_.subscribe(channel, &TransformListener::onMessage, this);
-    queues_.emplace_back(subscription, channel, options_.queue_bytes, options_.queue_capacity);
+  try {
+    for (const std::string& channel : channels) {
+      lcm::Subscription* subscription =
+          lcm_.subscribe(channel, &TransformListener::onMessage, this);
+      queues_.emplace_back(subscription, channel, options_.queue_bytes, options_.queue_capacity);
+    }
+  } catch (...) {  // an LCM of the caller's must not keep calling a listener never made
+    for (const SubscriptionBudget& queue : queues_) lcm_.unsubscribe(queue.subscription());
+    queues_.clear();
+    throw;
   }
   if (options_.request_statics_at_start) requestStatics();
 }
@@ -164,6 +171,7 @@ void TransformListener::sendReports() noexcept {
     reports.swap(unsent_reports_);
   }
   for (const std::string& message : reports) {
+    if (stopping_.load(std::memory_order_relaxed)) return;
     try {
       options_.reporter(message);
     } catch (const std::exception& e) {
@@ -187,6 +195,7 @@ void TransformListener::fitQueue(const std::string& channel, std::size_t message
 }
 
 void TransformListener::onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  if (stopping_.load(std::memory_order_relaxed)) return;
   // Nothing may escape into LCM's C dispatch loop.
   try {
     fitQueue(channel, buffer->data_size);
@@ -205,6 +214,7 @@ void TransformListener::onMessage(const lcm::ReceiveBuffer* buffer, const std::s
 
 void TransformListener::handleMessage(const void* data, std::size_t size,
                                       const std::string& channel) {
+  if (stopping_.load(std::memory_order_relaxed)) return;
   handleEncoded(data, size, channel);
   sendReports();
 }

@@ -8,6 +8,7 @@
 #include "bindings.hpp"
 #include "buffer_class.hpp"
 #include "python_callback.hpp"
+#include "without_gil.hpp"
 
 namespace lcmtf::python {
 
@@ -54,8 +55,7 @@ void defineInserts(BufferClass& buffer_class) {
       [](Buffer& buffer, py::handle transforms, StrArg authority, bool is_static) {
         const std::vector<TransformStamped> batch = transformStampedList(transforms, "transforms");
         const std::string sender = text(authority, "authority");
-        py::gil_scoped_release release;
-        return buffer.setTransforms(batch, sender, is_static);
+        return withoutGil([&] { return buffer.setTransforms(batch, sender, is_static); });
       },
       py::arg("transforms"), py::arg("authority"), py::arg("is_static") = false,
       "set_transform for a whole batch under one lock, as when filling a buffer from a log; "

@@ -10,6 +10,7 @@
 #include "closes_at_exit.hpp"
 #include "lcmtf/transform_listener.hpp"
 #include "python_callback.hpp"
+#include "without_gil.hpp"
 
 namespace lcmtf::python {
 
@@ -22,8 +23,13 @@ bool onItsThread(const Object&) {
 }
 inline bool onItsThread(const TransformListener& listener) { return listener.onItsThread(); }
 
+/// Makes `object` stop calling back at once, before it is stopped from another thread.
 template <class Object>
-class Closable {
+void stopCallingBack(Object&) {}
+inline void stopCallingBack(TransformListener& listener) { listener.stop(); }
+
+template <class Object>
+class Closable final : public ClosedAtExit {
  public:
   /// `keep_alive` lives as long as `object` (what it refers to, such as a listener's buffer).
   Closable(std::unique_ptr<Object> object, std::string name,
@@ -31,7 +37,7 @@ class Closable {
       : keep_alive_(std::move(keep_alive)),
         name_(std::move(name)),
         object_(std::move(object)),
-        at_exit_(closeAtExit([this] { close(); })) {}
+        at_exit_(closeAtExit(*this)) {}
   ~Closable() { close(); }
   Closable(const Closable&) = delete;
   Closable& operator=(const Closable&) = delete;
@@ -41,30 +47,40 @@ class Closable {
   static CallableCell* callbackOf(Closable& closable) { return closable.callback_.get(); }
 
   Object& get() const {
-    if (!object_) throw py::value_error("the " + name_ + " is closed");
+    if (!object_) throw py::value_error("the " + name_ + " " + closed_);
     return *object_;
   }
   /// Taken out with the GIL held, so that no other thread is using it and any that calls it
   /// next is told it is closed; then stopped with the GIL released, as its thread may be waiting
   /// for the GIL to call back. Closed from its own thread (inside its reporter), it is stopped
   /// from another one, once the call back returns.
-  void close() {
+  void close() override {
     std::unique_ptr<Object> object = std::move(object_);
     if (!object) return;
     forgetCloseAtExit(at_exit_);
-    py::gil_scoped_release release;
-    if (onItsThread(*object)) {
+    withoutGil([&] {
+      if (!onItsThread(*object)) {
+        object.reset();
+        return;
+      }
+      stopCallingBack(*object);
       closeLater([object = std::shared_ptr<Object>(std::move(object)),
                   keep_alive = std::move(keep_alive_)]() mutable {
         object.reset();
         keep_alive.reset();
       });
-      return;
-    }
-    object.reset();
+    });
+  }
+
+  void abandonAfterFork() override {
+    static_cast<void>(object_.release());
+    closed_ =
+        "was opened before this process was forked, and its threads stayed in the parent "
+        "process: open another one here";
   }
 
  private:
+  std::string closed_ = "is closed";
   std::shared_ptr<const void> keep_alive_;
   std::string name_;
   std::unique_ptr<Object> object_;
@@ -79,9 +95,14 @@ void defineClose(py::class_<Closable<Object>>& python_class) {
       .def("close", &Closable<Object>::close,
            "Stops it and frees its LCM; it cannot be used afterwards. Called at the end of a "
            "with block, by the garbage collector otherwise, and at the interpreter's exit "
-           "(after the functions registered with atexit later than lcmtf was imported).")
-      .def("__enter__", [](py::object self) { return self; })
-      .def("__exit__", [](Closable<Object>& self, const py::args&) { self.close(); });
+           "(after the functions registered with atexit later than lcmtf was imported). "
+           "Closed from its own reporter, it calls back and stores nothing more. A child "
+           "process made by os.fork() cannot use the ones it inherits.")
+      .def(
+          "__enter__", [](py::object self) { return self; }, "Returns itself, for a with block.")
+      .def(
+          "__exit__", [](Closable<Object>& self, const py::args&) { self.close(); },
+          "Closes it at the end of a with block.");
 }
 
 }  // namespace lcmtf::python

@@ -7,83 +7,88 @@
 
 #include <pybind11/pybind11.h>
 
+#include "without_gil.hpp"
+
 namespace lcmtf::python {
 
 namespace {
 
 struct Closes {
   std::mutex mutex;
-  std::map<std::uint64_t, std::function<void()>> at_exit;  // in the order they were kept
+  std::map<std::uint64_t, ClosedAtExit*> at_exit;  // in the order they were kept
   std::uint64_t next_key = 0;
   std::condition_variable later_all_done;
   std::size_t later_running = 0;
 };
 
 // Never destroyed: a later close may still run while static objects are torn down.
-Closes& closes() {
-  static auto* all = new Closes;
-  return *all;
-}
+Closes* all_closes = new Closes;
 
 // One at a time, with the GIL held until the close releases it: while it does, another thread
 // may open an object, or destroy one, which forgets its close.
 void closeWhatIsStillOpen() {
-  Closes& all = closes();
   for (;;) {
-    std::function<void()> close;
+    ClosedAtExit* object = nullptr;
     {
-      std::lock_guard<std::mutex> lock(all.mutex);
-      if (all.at_exit.empty()) return;
-      const auto first = all.at_exit.begin();
-      close = std::move(first->second);
-      all.at_exit.erase(first);
+      std::lock_guard<std::mutex> lock(all_closes->mutex);
+      if (all_closes->at_exit.empty()) return;
+      object = all_closes->at_exit.begin()->second;
     }
-    close();
+    object->close();  // forgets it
   }
 }
 
 void waitForLaterCloses() {
-  pybind11::gil_scoped_release release;
-  Closes& all = closes();
-  std::unique_lock<std::mutex> lock(all.mutex);
-  all.later_all_done.wait(lock, [&] { return all.later_running == 0; });
+  withoutGil([] {
+    std::unique_lock<std::mutex> lock(all_closes->mutex);
+    all_closes->later_all_done.wait(lock, [] { return all_closes->later_running == 0; });
+  });
+}
+
+// In the child, alone: the parent's threads, one of which may have held the mutex, are gone.
+void abandonAfterFork() {
+  Closes* inherited = all_closes;
+  all_closes = new Closes;
+  all_closes->next_key = inherited->next_key;
+  for (const auto& [key, object] : inherited->at_exit) object->abandonAfterFork();
 }
 
 }  // namespace
 
-std::uint64_t closeAtExit(std::function<void()> close) {
-  Closes& all = closes();
-  std::lock_guard<std::mutex> lock(all.mutex);
-  const std::uint64_t key = all.next_key++;
-  all.at_exit.emplace(key, std::move(close));
+std::uint64_t closeAtExit(ClosedAtExit& object) {
+  std::lock_guard<std::mutex> lock(all_closes->mutex);
+  const std::uint64_t key = all_closes->next_key++;
+  all_closes->at_exit.emplace(key, &object);
   return key;
 }
 
 void forgetCloseAtExit(std::uint64_t key) {
-  Closes& all = closes();
-  std::lock_guard<std::mutex> lock(all.mutex);
-  all.at_exit.erase(key);
+  std::lock_guard<std::mutex> lock(all_closes->mutex);
+  all_closes->at_exit.erase(key);
 }
 
 void closeLater(std::function<void()> close) {
-  Closes& all = closes();
+  Closes* closes = all_closes;
   {
-    std::lock_guard<std::mutex> lock(all.mutex);
-    ++all.later_running;
+    std::lock_guard<std::mutex> lock(closes->mutex);
+    ++closes->later_running;
   }
-  std::thread([close = std::move(close), &all]() mutable {
+  std::thread([close = std::move(close), closes]() mutable {
     close();
     close = nullptr;
-    std::lock_guard<std::mutex> lock(all.mutex);
-    if (--all.later_running == 0) all.later_all_done.notify_all();
+    std::lock_guard<std::mutex> lock(closes->mutex);
+    if (--closes->later_running == 0) closes->later_all_done.notify_all();
   }).detach();
 }
 
 void closeEverythingAtExit() {
-  pybind11::module_::import("atexit").attr("register")(pybind11::cpp_function([] {
+  namespace py = pybind11;
+  py::module_::import("atexit").attr("register")(py::cpp_function([] {
     closeWhatIsStillOpen();
     waitForLaterCloses();
   }));
+  py::module_::import("os").attr("register_at_fork")(py::arg("after_in_child") =
+                                                         py::cpp_function(&abandonAfterFork));
 }
 
 }  // namespace lcmtf::python

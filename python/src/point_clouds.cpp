@@ -2,6 +2,7 @@
 
 #include "arguments.hpp"
 #include "buffer_class.hpp"
+#include "without_gil.hpp"
 
 namespace lcmtf::python {
 
@@ -15,10 +16,7 @@ py::array_t<double> moved(const py::array_t<double>& points, const Transform& ta
   const Eigen::Index columns = static_cast<Eigen::Index>(count);
   const Eigen::Map<const Eigen::Matrix3Xd> cloud(points.data(), 3, columns);
   Eigen::Map<Eigen::Matrix3Xd> into(result.mutable_data(), 3, columns);
-  {
-    py::gil_scoped_release release;
-    transformCloud(target_T_source, cloud, into);
-  }
+  withoutGil([&] { transformCloud(target_T_source, cloud, into); });
   return result;
 }
 

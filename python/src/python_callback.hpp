@@ -22,6 +22,32 @@ struct CallableCell {
 };
 using CallableCellPtr = std::shared_ptr<CallableCell>;
 
+inline bool interpreterShuttingDown() {
+#if PY_VERSION_HEX >= 0x030D0000
+  return Py_IsFinalizing();
+#else
+  return _Py_IsFinalizing();
+#endif
+}
+
+/// Frees a cell, whichever thread drops its last reference. A thread without the GIL leaves it
+/// to Python's main thread, which frees it with the GIL held at its next chance: taking the GIL
+/// here, from a thread of lcmtf's (a wait given up at Ctrl-C, a listener closed later) while
+/// the interpreter shuts down, would end the thread inside this deleter. Such a thread leaves
+/// the cell to the process's end once the shutdown has begun, as does any after it.
+inline void deleteCell(CallableCell* cell) {
+  if (!Py_IsInitialized()) return;
+  if (PyGILState_Check()) {
+    delete cell;
+    return;
+  }
+  const auto free_cell = [](void* pending) {
+    delete static_cast<CallableCell*>(pending);
+    return 0;
+  };
+  if (!interpreterShuttingDown()) Py_AddPendingCall(free_cell, cell);
+}
+
 /// The cell of `value`: null when it is None, TypeError naming `argument` when it is not
 /// callable.
 inline CallableCellPtr callableArgument(py::handle value, const char* argument) {
@@ -30,11 +56,7 @@ inline CallableCellPtr callableArgument(py::handle value, const char* argument) 
     throw py::type_error(std::string(argument) + " must be callable or None, not " +
                          Py_TYPE(value.ptr())->tp_name);
   }
-  return CallableCellPtr(new CallableCell{py::reinterpret_borrow<py::object>(value)},
-                         [](CallableCell* cell) {
-                           py::gil_scoped_acquire gil;
-                           delete cell;
-                         });
+  return CallableCellPtr(new CallableCell{py::reinterpret_borrow<py::object>(value)}, &deleteCell);
 }
 
 /// Calls the cell's callable with the message, the GIL taken, from whichever thread calls it;

@@ -11,6 +11,8 @@
 #include <memory>
 #include <thread>
 
+#include "without_gil.hpp"
+
 namespace lcmtf::python {
 
 namespace py = pybind11;
@@ -27,10 +29,7 @@ inline constexpr std::chrono::milliseconds kSignalCheckPeriod{50};
 /// its own timeout. `wait` must therefore own everything it uses.
 template <class Result>
 Result waitReleased(std::function<Result()> wait) {
-  if (!onMainThread()) {
-    py::gil_scoped_release release;
-    return wait();
-  }
+  if (!onMainThread()) return withoutGil(wait);
   auto task = std::make_shared<std::packaged_task<Result()>>(std::move(wait));
   std::future<Result> done = task->get_future();
   std::thread([task] { (*task)(); }).detach();

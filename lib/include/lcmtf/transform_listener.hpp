@@ -118,6 +118,10 @@ class TransformListener {
 
   /// Asks every static broadcaster to resend its set now.
   void requestStatics();
+  /// Stops handling messages now, from any thread, its own (inside its reporter) included:
+  /// those still queued are dropped and the reporter is not called again. The destructor then
+  /// only waits for its thread to end.
+  void stop() { stopping_ = true; }
   ListenerStatistics statistics() const;
   /// Per sender followed now: those heard more than once first, each group the most recent first.
   std::vector<AuthorityStatistics> authorityStatistics() const;
