@@ -180,7 +180,8 @@ std::optional<int> parseStaticPublisherCommandLine(const std::vector<std::string
                   "x y z qx qy qz qw frame_id child_frame_id")
       ->type_name("");
   app->add_option("--file", files, "YAML file of transforms (may be given more than once)")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->allow_extra_args(false);  // one file each time, so that a pose after it stays positional
   app->add_option("--period", period_seconds,
                   "Seconds between resends of the whole set; 0: only at start and on request")
       ->check(finiteNumber())

@@ -99,9 +99,9 @@ std::vector<StaticTransformSpec> parseStaticTransformYaml(const std::string& tex
     throw CommandLineError(name + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
                            ": not valid YAML: a NUL byte (YAML text has none)");
   }
-  YAML::Node root;
+  std::vector<YAML::Node> documents;
   try {
-    root = YAML::Load(text);
+    documents = YAML::LoadAll(text);
   } catch (const YAML::DeepRecursion& e) {
     throw CommandLineError(
         where(name, e.mark) + ": not valid YAML: nested deeper than the YAML reader goes (" +
@@ -109,12 +109,24 @@ std::vector<StaticTransformSpec> parseStaticTransformYaml(const std::string& tex
   } catch (const YAML::Exception& e) {
     throw CommandLineError(where(name, e.mark) + ": not valid YAML: " + e.msg);
   }
+  if (documents.size() > 1) {
+    throw CommandLineError(where(name, documents[1].Mark()) +
+                           ": a second YAML document: put every transform in the one list");
+  }
+  const YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
   YAML::Node list = root;
   if (root.IsMap()) {
     if (!root["transforms"]) {
       throw CommandLineError(where(name, root.Mark()) +
                              ": expected a list of transforms, or a map with the key "
                              "'transforms' holding that list");
+    }
+    for (const auto& entry : root) {
+      const std::string key = entry.first.Scalar();
+      if (key != "transforms") {
+        throw CommandLineError(where(name, entry.first.Mark()) + ": unknown key '" + key +
+                               "' (the only one at the top is 'transforms')");
+      }
     }
     list = root["transforms"];
   }

@@ -214,6 +214,18 @@ TEST(StaticPublisherCommandLine, FileAndFlagsCombineButAChildGivenTwiceIsRefused
   std::filesystem::remove_all(directory);
 }
 
+TEST(StaticPublisherCommandLine, APoseAfterAFileIsNotTakenForMoreFiles) {
+  const std::filesystem::path directory = lcmtf_test::makeTemporaryDirectory("static-publisher");
+  const std::string file = (directory / "mounts.yaml").string();
+  std::ofstream(file) << "- {frame_id: base, child_frame_id: camera, x: 0.5}\n";
+  const Parsed parsed = parse({"--file", file, "0", "0", "1", "0", "0", "0", "odom", "base"});
+  ASSERT_FALSE(parsed.status) << parsed.err;
+  ASSERT_EQ(parsed.options.transforms.size(), 2u);
+  EXPECT_EQ(parsed.options.transforms[0].child_frame, "base");
+  EXPECT_EQ(parsed.options.transforms[1].child_frame, "camera");
+  std::filesystem::remove_all(directory);
+}
+
 // YAML's "\e" is the escape character: a file could otherwise clear the screen or recolour it.
 TEST(StaticPublisher, ControlCharactersFromAFileReachTheTerminalEscaped) {
   const std::filesystem::path directory = lcmtf_test::makeTemporaryDirectory("static-publisher");

@@ -62,6 +62,17 @@ TEST(StaticTransformFile, UnknownKeyIsNamedWithItsLineAndColumn) {
               HasSubstr("mounts.yaml:3:3: unknown key 'yaww' (known: frame_id, child_frame_id"));
 }
 
+// A transform under a misspelt key, or in a document of its own, would otherwise be left out.
+TEST(StaticTransformFile, AnUnknownKeyBesideTransformsAndASecondDocumentAreRefused) {
+  EXPECT_THAT(refusal("transforms:\n  - {frame_id: a, child_frame_id: b}\n"
+                      "transform:\n  - {frame_id: a, child_frame_id: c}\n"),
+              HasSubstr("mounts.yaml:3:1: unknown key 'transform' (the only one at the top is "
+                        "'transforms')"));
+  EXPECT_THAT(
+      refusal("- {frame_id: a, child_frame_id: b}\n---\n- {frame_id: a, child_frame_id: c}\n"),
+      HasSubstr("mounts.yaml:3:1: a second YAML document"));
+}
+
 TEST(StaticTransformFile, ValueThatIsNoNumberIsNamedWithItsPosition) {
   EXPECT_THAT(refusal("- {frame_id: a, child_frame_id: b, x: one}\n"),
               HasSubstr("mounts.yaml:1:39: x: 'one' is not a finite number"));
