@@ -350,7 +350,7 @@ void TransformListener::refuseStampedAhead(const transform_t& message, std::int6
              toString(fromUtime(message.utime)) + ", " + toString(Duration(message.utime - clock)) +
              " ahead): stored, it would make its edge refuse its publishers' samples until then. "
              "If the sender's clock is ahead of this one, synchronize the clocks or raise "
-             "max_stamp_ahead (0: no limit)");
+             "max_stamp_ahead (0: no limit; --max-stamp-ahead in lcmtf's programs)");
 }
 
 // Whether the frames `message` names that the buffer has not seen (nor `added`, those of the

@@ -82,6 +82,10 @@ class EchoLoop {
       std::string missing = printable(describeMissing(buffer_, options_.reference_frame,
                                                       options_.frame, time, heardAnything()));
       if (!heardAnything()) missing += " on " + channels();
+      if (const std::string note = stampedAheadNote(listener_, options_.connection);
+          !note.empty()) {
+        missing += " (" + note + ")";
+      }
       if (timed_out) {
         err_ << kProgram << ": gave up after " << toString(*options_.timeout) << ": " << missing
              << tooShortForTheTimeBeforeNow() << std::endl;
@@ -293,8 +297,8 @@ std::string describeMissing(const BufferCore& buffer, const std::string& referen
     for (const std::string& name : unknown) {
       text += (text.empty() ? "frame '" : " and frame '") + name + "'" + didYouMean(name, known);
     }
-    return text + (unknown.size() == 1 ? " is" : " are") +
-           " unknown; frames heard so far: " + listOfNames(unknown.front(), known);
+    return text + (unknown.size() == 1 ? " is" : " are") + " unknown; frames heard so far: " +
+           (known.empty() ? std::string("none") : listOfNames(unknown.front(), known));
   }
   std::string why;
   if (buffer.canTransform(reference_frame, frame, time, &why)) return "available";

@@ -94,8 +94,10 @@ class MonitorLoop {
   }
 
   void report(std::ostream& out, TimePoint window_start, TimePoint window_end) {
-    const TrafficSummary summary =
-        traffic_.summarize(window_start, window_end, buffer_.cacheTime());
+    TrafficSummary summary = traffic_.summarize(window_start, window_end, buffer_.cacheTime());
+    if (std::string note = stampedAheadNote(listener_, options_.connection); !note.empty()) {
+      summary.problems.push_back(std::move(note));
+    }
     const std::optional<ChainReport> chain =
         chain_ ? std::optional<ChainReport>(chain_->report()) : std::nullopt;
     if (options_.continuous && options_.clear_screen) out << kClearScreen;
@@ -115,7 +117,12 @@ class MonitorLoop {
       const ChainReport chain = chain_->report();
       if (!chain.problem.empty()) {
         err << kProgram << ": no chain from '" << chain.frame_a << "' to '" << chain.frame_b
-            << "': " << printable(chain.problem) << '\n';
+            << "': " << printable(chain.problem);
+        if (const std::string note = stampedAheadNote(listener_, options_.connection);
+            !note.empty()) {
+          err << " (" << note << ')';
+        }
+        err << '\n';
         return kExitFailure;
       }
     }

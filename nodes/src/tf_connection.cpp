@@ -16,6 +16,16 @@ void addConnectionOptions(CLI::App& app, TfConnection& connection, bool with_dyn
                    "Channel on which static transforms are asked for again");
 }
 
+std::string stampedAheadNote(const TransformListener& listener, const TfConnection& connection) {
+  const std::uint64_t refused = listener.statistics().stamped_ahead;
+  if (refused == 0) return {};
+  return std::to_string(refused) + " transform" + (refused == 1 ? " was" : "s were") +
+         " refused as stamped more than " +
+         toString(secondsToDuration(connection.max_stamp_ahead_s)) +
+         " ahead of this machine's clock: synchronize the clocks, or take them with "
+         "--max-stamp-ahead 0";
+}
+
 ListenerOptions listenerOptionsFor(const TfConnection& connection, const std::string& program) {
   ListenerOptions listener;
   listener.max_stamp_ahead = secondsToDuration(connection.max_stamp_ahead_s);

@@ -235,6 +235,11 @@ TEST(Echo, TransformsStampedAMinuteAheadAreRefusedSayingWhyUnlessTheLimitIsLifte
   EXPECT_THAT(err.str(), HasSubstr("refused transforms stamped more than 10.000000 s ahead of "
                                    "this machine's clock (first: 'odom' -> 'base' from "
                                    "'clock_ahead'"));
+  EXPECT_THAT(err.str(), HasSubstr("gave up after 1.000000 s: frame 'odom' and frame 'base' are "
+                                   "unknown; frames heard so far: none ("));
+  EXPECT_THAT(err.str(), HasSubstr("refused as stamped more than 10.000000 s ahead of this "
+                                   "machine's clock: synchronize the clocks, or take them with "
+                                   "--max-stamp-ahead 0)"));
   std::ostringstream lifted_out, lifted_err;
   EXPECT_EQ(echoCommand({"--lcm-url", url, "--once", "--timeout", "10", "--max-stamp-ahead", "0",
                          "odom", "base"},

@@ -6,10 +6,12 @@
 
 #include <atomic>
 #include <sstream>
+#include <thread>
 
 #include "lcmtf/nodes/monitor_report.hpp"
 
 #include "lcmtf/static_transform_broadcaster.hpp"
+#include "lcmtf/transform_broadcaster.hpp"
 #include "support/parsed_command_line.hpp"
 #include "support/test_lcm.hpp"
 #include "support/wire_samples.hpp"
@@ -202,6 +204,32 @@ TEST(Monitor, AChainToAnUnknownFrameExitsOneSuggestingTheFrameMeant) {
   EXPECT_EQ(status, kExitFailure) << out.str();
   EXPECT_THAT(err.str(), HasSubstr("lcmtf-monitor: no chain from 'base' to 'gripper_tpc': "));
   EXPECT_THAT(err.str(), HasSubstr("'gripper_tpc' (did you mean 'gripper_tcp'?)"));
+}
+
+// A sender whose clock runs a minute ahead: its transforms are refused, and the report says so.
+TEST(Monitor, TransformsRefusedAsStampedAheadAreListedAndExplainAMissingChain) {
+  const std::string url = lcmtf_test::privateUdpmUrl("Monitor.TransformsRefusedAsStampedAhead");
+  std::atomic<bool> sending{true};
+  std::thread sender([&] {
+    TransformBroadcaster broadcaster(url, kTfChannel, "clock_ahead");
+    while (sending) {
+      broadcaster.sendTransform({now() + std::chrono::minutes(1), "odom", "base", Transform()});
+      std::this_thread::sleep_for(milliseconds(20));
+    }
+  });
+  std::ostringstream out, err;
+  const std::atomic<bool> stop{false};
+  const int status =
+      monitorCommand({"--lcm-url", url, "--duration", "1", "odom", "base"}, out, err, stop);
+  sending = false;
+  sender.join();
+  EXPECT_EQ(status, kExitFailure) << out.str();
+  const std::string note =
+      " refused as stamped more than 10.000000 s ahead of this machine's clock: synchronize the "
+      "clocks, or take them with --max-stamp-ahead 0";
+  EXPECT_THAT(out.str(), HasSubstr(note + "\n"));
+  EXPECT_THAT(err.str(), HasSubstr("lcmtf-monitor: no chain from 'odom' to 'base': "));
+  EXPECT_THAT(err.str(), HasSubstr(note + ")\n"));
 }
 
 TEST(Monitor, NothingHeardIsReportedAndExitsOne) {

@@ -45,6 +45,10 @@ int parseOpenAndRun(const std::vector<std::string>& args, const std::string& pro
   return run(options, *lcm, out, err, stop);
 }
 
+/// What the transforms `listener` refused as stamped ahead of this machine's clock (none: "")
+/// mean for a tool's user, who may give --max-stamp-ahead.
+std::string stampedAheadNote(const TransformListener& listener, const TfConnection& connection);
+
 /// Listener options for the connection's channels, signed by `program`, refusals not reported.
 ListenerOptions listenerOptionsFor(const TfConnection& connection, const std::string& program);
 
