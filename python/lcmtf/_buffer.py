@@ -19,6 +19,7 @@ class Buffer(_lcmtf.Buffer):
         interpreter waits for a pending wait at exit, at most its timeout.
         """
         available = self.can_transform(target, source, time)  # bad arguments raise here
+        _lcmtf._check_timeout(timeout)
         future = concurrent.futures.Future()
         if callback is not None:
             future.add_done_callback(callback)

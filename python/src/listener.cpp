@@ -40,6 +40,10 @@ std::unique_ptr<Listener> makeListener(
   options.static_request_channel = text(static_request_channel, "static_request_channel");
   options.static_only = static_only;
   options.allowed_authorities = textList(allowed_authorities, "allowed_authorities");
+  if (!allowed_authorities.is_none() && options.allowed_authorities.empty()) {
+    throw py::value_error(
+        "allowed_authorities is empty: it would refuse every sender (None accepts all)");
+  }
   options.max_frames = count(max_frames, "max_frames", 1);
   options.max_authorities = count(max_authorities, "max_authorities", 1);
   options.queue_capacity = static_cast<int>(count(queue_capacity, "queue_capacity", 1, INT_MAX));

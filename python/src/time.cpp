@@ -13,6 +13,9 @@ void bindTime(py::module_& module) {
       "to_utime", [](FloatArg time) { return toUtime(timePoint(time, "time")); }, py::arg("time"),
       "LCM's integer microseconds since the epoch from seconds, rounded to the nearest "
       "microsecond.");
+  module.def(
+      "_check_timeout", [](FloatArg timeout) { duration(timeout, "timeout"); }, py::arg("timeout"),
+      "Raises what a lookup would for this timeout; for lcmtf's own use.");
 }
 
 }  // namespace lcmtf::python

@@ -97,6 +97,15 @@ CASES = {
     "listener authorities a str": (
         lambda buffer: lcmtf.TransformListener(buffer, "memq://", allowed_authorities="me"),
         TypeError, "allowed_authorities"),
+    "listener authorities empty": (
+        lambda buffer: lcmtf.TransformListener(buffer, "memq://", allowed_authorities=[]),
+        ValueError, "allowed_authorities"),
+    "wait timeout a str": (
+        lambda buffer: buffer.wait_for_transform("map", "nowhere", 0.0, "x"), TypeError,
+        "timeout"),
+    "wait timeout negative": (
+        lambda buffer: buffer.wait_for_transform("map", "nowhere", 0.0, -1.0), ValueError,
+        "timeout"),
     "buffer reporter not callable": (
         lambda buffer: lcmtf.Buffer(reporter="stderr"), TypeError, "reporter"),
     "listener reporter not callable": (
