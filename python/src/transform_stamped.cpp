@@ -65,10 +65,11 @@ void bindVelocity(py::module_& module) {
   py::class_<Velocity>(module, "Velocity",
                        "Linear (m/s) and angular (rad/s) velocity of one frame relative to "
                        "another, expressed in `frame`, averaged over an interval centred on "
-                       "`stamp`.")
+                       "`stamp`, or clipped to the data available.")
       .def_property_readonly(
           "stamp", [](const Velocity& v) { return seconds(v.stamp); },
-          "The middle of the interval, in seconds since the epoch.")
+          "The time asked for (the latest common time for 0.0), in seconds since the epoch: the "
+          "middle of the interval, unless the interval was clipped to the data available.")
       .def_readonly("frame", &Velocity::frame, "The frame both vectors are expressed in.")
       .def_property_readonly(
           "linear", [](const Velocity& v) { return readOnlyArray(v.linear); },

@@ -89,7 +89,8 @@ class BufferCore {
   TimePoint getLatestCommonTime(const std::string& target, const std::string& source) const;
 
   /// Velocity of `tracking` relative to `observation`, expressed in `observation`, by central
-  /// difference over `averaging_interval` around `time`, clipped to the data available.
+  /// difference over `averaging_interval` around `time`, clipped to the data available (then
+  /// shorter, and no longer centred on `time`, which is the stamp given back).
   Velocity lookupVelocity(const std::string& tracking, const std::string& observation,
                           TimePoint time, Duration averaging_interval) const;
 
