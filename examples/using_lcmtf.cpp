@@ -2,6 +2,7 @@
 // the camera was when it took an image, and where what it saw is now.
 // usage: lcmtf_using_lcmtf [LCM_URL]   (default: LCM's, which keeps traffic on this machine)
 #include <cstdio>
+#include <exception>
 #include <string>
 
 #include <lcm/lcm-cpp.hpp>
@@ -13,6 +14,10 @@
 
 int main(int argc, char** argv) {
   const std::string url = argc > 1 ? argv[1] : "";
+  if (argc > 2 || url.rfind("-", 0) == 0) {
+    std::fprintf(stderr, "usage: lcmtf_using_lcmtf [LCM_URL]\n");
+    return url == "--help" || url == "-h" ? 0 : 2;
+  }
   try {
     lcmtf::Buffer buffer;  // 10 s of history per edge
     lcmtf::ListenerOptions listening;
@@ -57,7 +62,7 @@ int main(int argc, char** argv) {
                    point.isApprox(Eigen::Vector3d(1.3, 0.0, 1.2))
                ? 0
                : 1;
-  } catch (const lcmtf::TransformException& e) {
+  } catch (const std::exception& e) {  // a lookup that failed, or an LCM that cannot be opened
     std::fprintf(stderr, "lcmtf_using_lcmtf: %s\n", e.what());
     return 1;
   }
