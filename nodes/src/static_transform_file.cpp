@@ -33,6 +33,42 @@ std::string knownKeys() {
   return list;
 }
 
+bool isDocumentMarker(std::string_view line, std::string_view marker) {
+  return line.substr(0, 3) == marker && (line.size() == 3 || line[3] == ' ' || line[3] == '\t');
+}
+
+bool isCommentOrBlank(std::string_view line) {
+  const std::size_t first = line.find_first_not_of(" \t");
+  return first == std::string_view::npos || line[first] == '#';
+}
+
+// The line (from 1) where a second YAML document begins in `text`, or 0: a document marker at
+// the start of a line once the first document has content, or content after its end marker.
+// yaml-cpp's YAML::LoadAll would tell, but it never returns on some malformed text (",").
+std::size_t secondDocumentLine(std::string_view text) {
+  bool content = false;
+  bool ended = false;
+  std::size_t number = 0;
+  for (std::size_t start = 0; start <= text.size(); ++number) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    std::string_view line = text.substr(start, end - start);
+    start = end + 1;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (isDocumentMarker(line, "...")) {
+      ended = ended || content;
+      continue;
+    }
+    if (isDocumentMarker(line, "---")) {
+      if (content || ended) return number + 1;
+      line.remove_prefix(3);
+    }
+    if (isCommentOrBlank(line) || (!content && line.front() == '%')) continue;
+    if (ended) return number + 1;
+    content = true;
+  }
+  return 0;
+}
+
 std::string scalar(const YAML::Node& value, const std::string& key, const std::string& at) {
   if (value.IsNull()) throw CommandLineError(at + ": '" + key + "' has no value");
   if (!value.IsScalar()) throw CommandLineError(at + ": '" + key + "' must be a single value");
@@ -99,9 +135,13 @@ std::vector<StaticTransformSpec> parseStaticTransformYaml(const std::string& tex
     throw CommandLineError(name + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
                            ": not valid YAML: a NUL byte (YAML text has none)");
   }
-  std::vector<YAML::Node> documents;
+  if (const std::size_t line = secondDocumentLine(text); line > 0) {
+    throw CommandLineError(name + ":" + std::to_string(line) +
+                           ": a second YAML document: put every transform in the one list");
+  }
+  YAML::Node root;
   try {
-    documents = YAML::LoadAll(text);
+    root = YAML::Load(text);
   } catch (const YAML::DeepRecursion& e) {
     throw CommandLineError(
         where(name, e.mark) + ": not valid YAML: nested deeper than the YAML reader goes (" +
@@ -109,11 +149,6 @@ std::vector<StaticTransformSpec> parseStaticTransformYaml(const std::string& tex
   } catch (const YAML::Exception& e) {
     throw CommandLineError(where(name, e.mark) + ": not valid YAML: " + e.msg);
   }
-  if (documents.size() > 1) {
-    throw CommandLineError(where(name, documents[1].Mark()) +
-                           ": a second YAML document: put every transform in the one list");
-  }
-  const YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
   YAML::Node list = root;
   if (root.IsMap()) {
     if (!root["transforms"]) {

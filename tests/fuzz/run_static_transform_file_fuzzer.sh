@@ -27,5 +27,10 @@ seed anchors '- &mount {frame_id: base, child_frame_id: left, x: 0.2}
 '
 seed escapes '- {frame_id: "caf\u00e9\t", child_frame_id: "\x41\e", z: 3}
 '
+seed two-documents '- {frame_id: a, child_frame_id: b}
+---
+- {frame_id: a, child_frame_id: c}
+'
+seed lone-comma ','
 exec "$fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
   -artifact_prefix="$work/artifacts/" "$work/corpus"

@@ -70,7 +70,17 @@ TEST(StaticTransformFile, AnUnknownKeyBesideTransformsAndASecondDocumentAreRefus
                         "'transforms')"));
   EXPECT_THAT(
       refusal("- {frame_id: a, child_frame_id: b}\n---\n- {frame_id: a, child_frame_id: c}\n"),
-      HasSubstr("mounts.yaml:3:1: a second YAML document"));
+      HasSubstr("mounts.yaml:2: a second YAML document"));
+  EXPECT_THAT(refusal("- {frame_id: a, child_frame_id: b}\n...\n# done\n- {frame_id: a}\n"),
+              HasSubstr("mounts.yaml:4: a second YAML document"));
+  const auto marked = parseStaticTransformYaml(
+      "%YAML 1.2\n--- # one document, marked\n- {frame_id: a, child_frame_id: b}\n...\n", "f");
+  EXPECT_EQ(marked.size(), 1u);
+}
+
+// yaml-cpp's reader of several documents never returns on this text.
+TEST(StaticTransformFile, ALoneCommaIsRefused) {
+  EXPECT_THAT(refusal(","), HasSubstr("mounts.yaml:1:1: expected a non-empty list of transforms"));
 }
 
 TEST(StaticTransformFile, ValueThatIsNoNumberIsNamedWithItsPosition) {
