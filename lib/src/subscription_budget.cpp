@@ -29,10 +29,8 @@ SubscriptionBudget::SubscriptionBudget(lcm::Subscription* subscription, std::str
       most_messages_(most_messages),
       capacity_(most_messages) {
   if (!subscriptionMade(subscription_)) {
-    throw std::runtime_error(
-        "LCM cannot subscribe to " + channel_ +
-        ": it cannot receive (with udpm, its self test failed: no route brings multicast back "
-        "to this machine, or the port cannot be bound)");
+    throw std::runtime_error("LCM cannot subscribe to " + channel_ + ": it cannot receive (" +
+                             kCannotReceiveWhy + ")");
   }
   subscription_->setQueueCapacity(most_messages);
 }

@@ -13,26 +13,29 @@ namespace lcmtf::programs {
 
 const char* lcmBuiltInDefaultUrl() { return "udpm://239.255.76.67:7667?ttl=0"; }
 
-std::string describeLcmUrl(const std::string& lcm_url) {
-  if (!lcm_url.empty()) return lcm_url;
-  const char* from_environment = std::getenv("LCM_DEFAULT_URL");
-  if (from_environment && *from_environment) return from_environment;
-  return lcmBuiltInDefaultUrl();
-}
-
 namespace {
+
+// $LCM_DEFAULT_URL, or null where it is unset or empty.
+const char* urlFromEnvironment() {
+  const char* from_environment = std::getenv("LCM_DEFAULT_URL");
+  return from_environment && *from_environment ? from_environment : nullptr;
+}
 
 // What the URL a failure names came from.
 std::string urlSource(const std::string& lcm_url) {
   if (!lcm_url.empty()) return "--lcm-url";
-  const char* from_environment = std::getenv("LCM_DEFAULT_URL");
-  if (from_environment && *from_environment) return "$LCM_DEFAULT_URL";
-  return "LCM's default URL";
+  return urlFromEnvironment() ? "$LCM_DEFAULT_URL" : "LCM's default URL";
 }
 
 void ignoreMessage(const lcm::ReceiveBuffer*, const std::string&, void*) {}
 
 }  // namespace
+
+std::string describeLcmUrl(const std::string& lcm_url) {
+  if (!lcm_url.empty()) return lcm_url;
+  if (const char* from_environment = urlFromEnvironment()) return from_environment;
+  return lcmBuiltInDefaultUrl();
+}
 
 std::unique_ptr<lcm::LCM> openLcm(const std::string& lcm_url) {
   auto lcm = std::make_unique<lcm::LCM>(lcm_url);
@@ -46,9 +49,8 @@ std::unique_ptr<lcm::LCM> openLcm(const std::string& lcm_url) {
   const bool receives = subscriptionMade(probe);
   lcm->unsubscribe(probe);
   if (!receives) {
-    throw CommandLineError(urlSource(lcm_url) + ": LCM at '" + url +
-                           "' cannot receive (with udpm, its self test failed: no route brings "
-                           "multicast back to this machine, or the port cannot be bound)");
+    throw CommandLineError(urlSource(lcm_url) + ": LCM at '" + url + "' cannot receive (" +
+                           kCannotReceiveWhy + ")");
   }
   return lcm;
 }

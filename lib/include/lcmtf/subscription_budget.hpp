@@ -14,6 +14,14 @@ inline constexpr int kLcmDefaultQueueCapacity = 30;
 /// The budget of bytes lcmtf's own subscriptions keep what LCM holds for them within.
 inline constexpr std::size_t kDefaultQueueBytes = std::size_t{64} << 20;
 
+/// Whether LCM made `subscription`: its C++ side returns one even when its C side could not
+/// subscribe, as when the LCM cannot receive (a udpm LCM whose self test failed).
+bool subscriptionMade(const lcm::Subscription* subscription);
+/// Why an LCM cannot make subscriptions, for the messages that say it cannot receive.
+inline constexpr const char* kCannotReceiveWhy =
+    "with udpm, its self test failed: no route brings multicast back to this machine, or the "
+    "port cannot be bound";
+
 /// Keeps what LCM holds for one subscription, waiting to be handled, within a budget of bytes.
 /// LCM 1.3.1 bounds those messages by their count alone (and its udpm provider holds one more
 /// than the count), so a peer sending large messages faster than they are handled would make it
@@ -22,10 +30,6 @@ inline constexpr std::size_t kDefaultQueueBytes = std::size_t{64} << 20;
 /// least one and at most `most_messages` (a count of 0 or less, which LCM gives its own meaning,
 /// is left as it is). fit() is called from the subscription's handler, on the thread that
 /// handles the LCM.
-/// Whether LCM made `subscription`: its C++ side returns one even when its C side could not
-/// subscribe, as when the LCM cannot receive (a udpm LCM whose self test failed).
-bool subscriptionMade(const lcm::Subscription* subscription);
-
 class SubscriptionBudget {
  public:
   using Clock = std::chrono::steady_clock;
