@@ -34,10 +34,9 @@ class Closable final : public ClosedAtExit {
   /// `keep_alive` lives as long as `object` (what it refers to, such as a listener's buffer).
   Closable(std::unique_ptr<Object> object, std::string name,
            std::shared_ptr<const void> keep_alive = nullptr)
-      : keep_alive_(std::move(keep_alive)),
-        name_(std::move(name)),
-        object_(std::move(object)),
-        at_exit_(closeAtExit(*this)) {}
+      : keep_alive_(std::move(keep_alive)), name_(std::move(name)), object_(std::move(object)) {
+    closeAtExit(*this);
+  }
   ~Closable() { close(); }
   Closable(const Closable&) = delete;
   Closable& operator=(const Closable&) = delete;
@@ -57,7 +56,7 @@ class Closable final : public ClosedAtExit {
   void close() override {
     std::unique_ptr<Object> object = std::move(object_);
     if (!object) return;
-    forgetCloseAtExit(at_exit_);
+    forgetCloseAtExit(*this);
     withoutGil([&] {
       if (!onItsThread(*object)) {
         object.reset();
@@ -84,7 +83,6 @@ class Closable final : public ClosedAtExit {
   std::shared_ptr<const void> keep_alive_;
   std::string name_;
   std::unique_ptr<Object> object_;
-  const std::uint64_t at_exit_;
   CallableCellPtr callback_;
 };
 

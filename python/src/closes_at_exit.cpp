@@ -1,8 +1,8 @@
 #include "closes_at_exit.hpp"
 
 #include <condition_variable>
-#include <map>
 #include <mutex>
+#include <set>
 #include <thread>
 
 #include <pybind11/pybind11.h>
@@ -15,8 +15,7 @@ namespace {
 
 struct Closes {
   std::mutex mutex;
-  std::map<std::uint64_t, ClosedAtExit*> at_exit;  // in the order they were kept
-  std::uint64_t next_key = 0;
+  std::set<ClosedAtExit*> at_exit;
   std::condition_variable later_all_done;
   std::size_t later_running = 0;
 };
@@ -32,7 +31,7 @@ void closeWhatIsStillOpen() {
     {
       std::lock_guard<std::mutex> lock(all_closes->mutex);
       if (all_closes->at_exit.empty()) return;
-      object = all_closes->at_exit.begin()->second;
+      object = *all_closes->at_exit.begin();
     }
     object->close();  // forgets it
   }
@@ -49,22 +48,19 @@ void waitForLaterCloses() {
 void abandonAfterFork() {
   Closes* inherited = all_closes;
   all_closes = new Closes;
-  all_closes->next_key = inherited->next_key;
-  for (const auto& [key, object] : inherited->at_exit) object->abandonAfterFork();
+  for (ClosedAtExit* object : inherited->at_exit) object->abandonAfterFork();
 }
 
 }  // namespace
 
-std::uint64_t closeAtExit(ClosedAtExit& object) {
+void closeAtExit(ClosedAtExit& object) {
   std::lock_guard<std::mutex> lock(all_closes->mutex);
-  const std::uint64_t key = all_closes->next_key++;
-  all_closes->at_exit.emplace(key, &object);
-  return key;
+  all_closes->at_exit.insert(&object);
 }
 
-void forgetCloseAtExit(std::uint64_t key) {
+void forgetCloseAtExit(ClosedAtExit& object) {
   std::lock_guard<std::mutex> lock(all_closes->mutex);
-  all_closes->at_exit.erase(key);
+  all_closes->at_exit.erase(&object);
 }
 
 void closeLater(std::function<void()> close) {

@@ -8,7 +8,6 @@
 // as the close may still need the GIL. A child process made by os.fork() has none of its
 // parent's threads: it abandons the objects it inherits, which it could neither use nor stop.
 
-#include <cstdint>
 #include <functional>
 
 namespace lcmtf::python {
@@ -24,10 +23,10 @@ class ClosedAtExit {
   ~ClosedAtExit() = default;
 };
 
-/// Keeps `object` for the exit; returns the key that forgets it. With the GIL held.
-std::uint64_t closeAtExit(ClosedAtExit& object);
-/// Forgets the object kept under `key`, if it is still kept. With the GIL held.
-void forgetCloseAtExit(std::uint64_t key);
+/// Keeps `object` for the exit. With the GIL held.
+void closeAtExit(ClosedAtExit& object);
+/// Forgets `object`, if it is still kept. With the GIL held.
+void forgetCloseAtExit(ClosedAtExit& object);
 
 /// Runs `close` on a thread of its own, now; call it without the GIL.
 void closeLater(std::function<void()> close);
