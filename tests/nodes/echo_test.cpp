@@ -11,6 +11,7 @@
 #include "lcmtf/nodes/pose_text.hpp"
 #include "lcmtf/static_transform_broadcaster.hpp"
 #include "lcmtf/transform_broadcaster.hpp"
+#include "support/clock_ahead_sender.hpp"
 #include "support/parsed_command_line.hpp"
 #include "support/test_lcm.hpp"
 
@@ -217,15 +218,7 @@ TEST(Echo, RunPrintsThePoseOnceItArrives) {
 // transforms, and prints the pose once told to take any stamp.
 TEST(Echo, TransformsStampedAMinuteAheadAreRefusedSayingWhyUnlessTheLimitIsLifted) {
   const std::string url = lcmtf_test::privateUdpmUrl("Echo.TransformsStampedAMinuteAhead");
-  std::atomic<bool> sending{true};
-  std::thread sender([&] {
-    TransformBroadcaster broadcaster(url, kTfChannel, "clock_ahead");
-    while (sending) {
-      broadcaster.sendTransform({now() + std::chrono::minutes(1), "odom", "base",
-                                 Transform({1.0, 0.0, 0.0}, {1, 0, 0, 0})});
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-  });
+  const lcmtf_test::ClockAheadSender sender(url);
   const std::atomic<bool> stop{false};
   std::ostringstream out, err;
   EXPECT_EQ(
@@ -247,8 +240,6 @@ TEST(Echo, TransformsStampedAMinuteAheadAreRefusedSayingWhyUnlessTheLimitIsLifte
             kExitSuccess)
       << lifted_err.str();
   EXPECT_THAT(lifted_out.str(), HasSubstr("'base' in 'odom'"));
-  sending = false;
-  sender.join();
 }
 
 TEST(Echo, RunGivesUpAfterTheTimeoutSayingWhatIsMissing) {

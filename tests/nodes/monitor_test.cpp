@@ -6,12 +6,11 @@
 
 #include <atomic>
 #include <sstream>
-#include <thread>
 
 #include "lcmtf/nodes/monitor_report.hpp"
 
 #include "lcmtf/static_transform_broadcaster.hpp"
-#include "lcmtf/transform_broadcaster.hpp"
+#include "support/clock_ahead_sender.hpp"
 #include "support/parsed_command_line.hpp"
 #include "support/test_lcm.hpp"
 #include "support/wire_samples.hpp"
@@ -209,20 +208,13 @@ TEST(Monitor, AChainToAnUnknownFrameExitsOneSuggestingTheFrameMeant) {
 // A sender whose clock runs a minute ahead: its transforms are refused, and the report says so.
 TEST(Monitor, TransformsRefusedAsStampedAheadAreListedAndExplainAMissingChain) {
   const std::string url = lcmtf_test::privateUdpmUrl("Monitor.TransformsRefusedAsStampedAhead");
-  std::atomic<bool> sending{true};
-  std::thread sender([&] {
-    TransformBroadcaster broadcaster(url, kTfChannel, "clock_ahead");
-    while (sending) {
-      broadcaster.sendTransform({now() + std::chrono::minutes(1), "odom", "base", Transform()});
-      std::this_thread::sleep_for(milliseconds(20));
-    }
-  });
   std::ostringstream out, err;
   const std::atomic<bool> stop{false};
-  const int status =
-      monitorCommand({"--lcm-url", url, "--duration", "1", "odom", "base"}, out, err, stop);
-  sending = false;
-  sender.join();
+  int status = 0;
+  {
+    const lcmtf_test::ClockAheadSender sender(url);
+    status = monitorCommand({"--lcm-url", url, "--duration", "1", "odom", "base"}, out, err, stop);
+  }
   EXPECT_EQ(status, kExitFailure) << out.str();
   const std::string note =
       " refused as stamped more than 10.000000 s ahead of this machine's clock: synchronize the "
