@@ -40,7 +40,9 @@ def pose_matrix(translation, q):
 def udpm_url(request):
     """A udpm URL with ttl=0 on a port of this test's own, so parallel tests never meet."""
     seed = zlib.crc32(request.node.nodeid.encode()) ^ (os.getpid() * 2654435761)
-    return f"udpm://239.255.76.67:{20000 + seed % 30000}?ttl=0"
+    # Below the kernel's ephemeral ports (from 32768), which any socket may hold without
+    # SO_REUSEADDR: LCM's bind of such a port fails, and it cannot receive.
+    return f"udpm://239.255.76.67:{20000 + seed % 12000}?ttl=0"
 
 
 @pytest.fixture

@@ -7,8 +7,10 @@
 namespace lcmtf_test {
 
 std::string privateUdpmUrl(const std::string& test_name) {
+  // Below the kernel's ephemeral ports (from 32768), which any socket may hold without
+  // SO_REUSEADDR: LCM's bind of such a port fails, and it cannot receive.
   constexpr std::size_t kFirstPort = 20000;
-  constexpr std::size_t kPortCount = 30000;
+  constexpr std::size_t kPortCount = 12000;
   const std::size_t seed =
       std::hash<std::string>{}(test_name) ^ (static_cast<std::size_t>(getpid()) * 2654435761u);
   const std::size_t port = kFirstPort + seed % kPortCount;
