@@ -11,6 +11,7 @@
 #include "lcmtf/transform_validation.hpp"
 #include "name_words.hpp"
 #include "prefetch.hpp"
+#include "transform_check.hpp"
 
 namespace lcmtf {
 
@@ -233,14 +234,20 @@ std::size_t BufferCore::Impl::insert(const TransformStamped* transforms, std::si
                                      const std::string& authority, bool is_static,
                                      std::string* error) {
   if (count == 1) {
-    Transform value;
-    bool normalized = false;
+    double norm = 1.0;
     std::string reason;
-    InsertRejection kind = validate(*transforms, value, normalized, reason);
+    InsertRejection kind = detail::checkTransform(*transforms, norm, reason);
+    Transform normalized_value;
+    const bool normalized = norm != 1.0;
+    if (normalized) {
+      normalized_value = transforms->transform;
+      normalized_value.rotation.coeffs() /= norm;
+    }
     {
       ExclusiveLock lock(lock_);
       if (kind == InsertRejection::kCount) {
-        kind = store(*transforms, value, normalized, authority, is_static, reason);
+        kind = store(*transforms, normalized ? normalized_value : transforms->transform, normalized,
+                     authority, is_static, reason);
         refreshRootPaths();
       }
       if (kind == InsertRejection::kCount) return 1;

@@ -4,6 +4,7 @@
 
 #include "lcmtf/frame_name.hpp"
 #include "name_words.hpp"
+#include "transform_check.hpp"
 
 namespace lcmtf {
 
@@ -18,12 +19,12 @@ std::string edgeName(const TransformStamped& t) {
 
 }  // namespace
 
-InsertRejection validateTransform(const TransformStamped& transform, Transform& value,
-                                  bool& normalized, std::string& reason) {
+InsertRejection detail::checkTransform(const TransformStamped& transform, double& rotation_norm,
+                                       std::string& reason) {
   const std::string_view parent = canonicalFrameName(transform.parent_frame);
   const std::string_view child = canonicalFrameName(transform.child_frame);
-  value = transform.transform;
-  normalized = false;
+  const Transform& value = transform.transform;
+  rotation_norm = 1.0;
   // Most rotations are unit to a few ulps, and then their norm is not needed.
   const double squared_norm = value.rotation.squaredNorm();
   const bool plainly_unit = std::abs(squared_norm - 1.0) <= kUnitNormRounding;
@@ -48,9 +49,18 @@ InsertRejection validateTransform(const TransformStamped& transform, Transform& 
   }
   // A unit quaternion computed in double precision is often a few ulps off 1: that is not
   // denormalized input, so it is stored as given and not counted.
-  normalized = !plainly_unit && std::abs(norm - 1.0) > kUnitNormRounding;
-  if (normalized) value.rotation.coeffs() /= norm;
+  if (!plainly_unit && std::abs(norm - 1.0) > kUnitNormRounding) rotation_norm = norm;
   return InsertRejection::kCount;
+}
+
+InsertRejection validateTransform(const TransformStamped& transform, Transform& value,
+                                  bool& normalized, std::string& reason) {
+  double norm = 1.0;
+  const InsertRejection rejection = detail::checkTransform(transform, norm, reason);
+  value = transform.transform;
+  normalized = norm != 1.0;
+  if (normalized) value.rotation.coeffs() /= norm;
+  return rejection;
 }
 
 InsertRejection validateTransform(const TransformStamped& transform, std::string* reason) {
