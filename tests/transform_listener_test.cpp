@@ -721,6 +721,21 @@ TEST(TransformListener, ANegativeLimitOnStampsAheadIsRefused) {
   }
 }
 
+// Its requests for statics would go out with a name that every broadcaster refuses to decode.
+TEST(TransformListener, ANameItCouldNotSendItsRequestsWithIsRefused) {
+  lcm::LCM lcm("memq://");
+  Buffer buffer;
+  ListenerOptions options;
+  options.authority = std::string(257, 'a');
+  try {
+    TransformListener listener(buffer, lcm, options);
+    ADD_FAILURE() << "an authority too long to send was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_THAT(e.what(), HasSubstr("TransformListener: authority 'aaa"));
+    EXPECT_THAT(e.what(), HasSubstr("is 257 bytes long"));
+  }
+}
+
 // LCM's udpm self test fails on port 0, which its test datagram never comes back from, after
 // waiting 10 s for it; LCM's C++ side still returns a subscription.
 TEST(TransformListener, AnLcmThatCannotReceiveMakesTheListenerThrowNamingTheChannel) {

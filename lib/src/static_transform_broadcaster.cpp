@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "lcmtf/message_conversions.hpp"
+#include "lcmtf/sendable_names.hpp"
 #include "lcmtf/transform_broadcaster.hpp"
 #include "lcmtf/wire_decode.hpp"
 #include "open_lcm.hpp"
@@ -21,6 +22,7 @@ StaticTransformBroadcaster::StaticTransformBroadcaster(StaticBroadcasterOptions 
       owned_lcm_(detail::openLcm(options_.lcm_url)),
       lcm_(*owned_lcm_),
       numbering_(options_.channel, options_.authority) {
+  requireSendable({}, options_.authority);
   subscribeToRequests();
   thread_ = std::thread([this] { run(); });
 }
@@ -28,6 +30,7 @@ StaticTransformBroadcaster::StaticTransformBroadcaster(StaticBroadcasterOptions 
 StaticTransformBroadcaster::StaticTransformBroadcaster(lcm::LCM& lcm,
                                                        StaticBroadcasterOptions options)
     : options_(std::move(options)), lcm_(lcm), numbering_(options_.channel, options_.authority) {
+  requireSendable({}, options_.authority);
   subscribeToRequests();
 }
 
@@ -48,6 +51,7 @@ bool StaticTransformBroadcaster::sendTransform(const TransformStamped& transform
 }
 
 bool StaticTransformBroadcaster::sendTransform(const std::vector<TransformStamped>& transforms) {
+  requireSendable(transforms, options_.authority);
   {
     std::lock_guard<std::mutex> guard(mutex_);
     for (const TransformStamped& transform : transforms) {

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "lcmtf/message_conversions.hpp"
+#include "lcmtf/sendable_names.hpp"
 #include "open_lcm.hpp"
 
 namespace lcmtf {
@@ -25,7 +26,9 @@ TransformBroadcaster::TransformBroadcaster(lcm::LCM& lcm, std::string channel,
     : lcm_(lcm),
       channel_(std::move(channel)),
       authority_(std::move(authority)),
-      numbering_(channel_, authority_) {}
+      numbering_(channel_, authority_) {
+  requireSendable({}, authority_);
+}
 
 TransformBroadcaster::TransformBroadcaster(const std::string& lcm_url, std::string channel,
                                            std::string authority)
@@ -33,13 +36,16 @@ TransformBroadcaster::TransformBroadcaster(const std::string& lcm_url, std::stri
       lcm_(*owned_lcm_),
       channel_(std::move(channel)),
       authority_(std::move(authority)),
-      numbering_(channel_, authority_) {}
+      numbering_(channel_, authority_) {
+  requireSendable({}, authority_);
+}
 
 bool TransformBroadcaster::sendTransform(const TransformStamped& transform) {
   return sendTransform(std::vector<TransformStamped>{transform});
 }
 
 bool TransformBroadcaster::sendTransform(const std::vector<TransformStamped>& transforms) {
+  requireSendable(transforms, authority_);
   tf_message_t message = makeTfMessage(transforms, authority_);
   message.sequence = numbering_.next();
   return lcm_.publish(channel_, &message) == 0;

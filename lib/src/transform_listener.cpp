@@ -9,6 +9,7 @@
 #include "lcmtf/frame_name.hpp"
 #include "lcmtf/message_conversions.hpp"
 #include "lcmtf/printable.hpp"
+#include "lcmtf/sendable_names.hpp"
 #include "lcmtf/subscription_budget.hpp"
 #include "listener_authorities.hpp"
 #include "open_lcm.hpp"
@@ -34,6 +35,8 @@ ListenerOptions checked(ListenerOptions options) {
     throw std::invalid_argument("TransformListener: max_stamp_ahead must not be negative; got " +
                                 toString(options.max_stamp_ahead));
   }
+  const std::string problem = unsendableNameProblem("authority", options.authority);
+  if (!problem.empty()) throw std::invalid_argument("TransformListener: " + problem);
   return options;
 }
 

@@ -191,7 +191,7 @@ std::optional<int> parseStaticPublisherCommandLine(const std::vector<std::string
   app->add_option(
          "--authority", options.authority,
          "Name the transforms are signed with (default: " + std::string(kProgram) + "@host:pid)")
-      ->check(nonEmptyName())
+      ->check(sendableName())
       ->type_name("NAME");
   app->add_flag("--check", options.check_only,
                 "Check the transforms, print them and exit without publishing");

@@ -9,6 +9,7 @@
 
 #include "lcmtf/frame_name.hpp"
 #include "lcmtf/programs/command_line.hpp"
+#include "lcmtf/sendable_names.hpp"
 
 namespace lcmtf::nodes {
 
@@ -17,6 +18,8 @@ namespace {
 std::string frameName(const std::string& name, const std::string& what, const std::string& origin) {
   const std::string bare(canonicalFrameName(name));
   if (bare.empty()) throw CommandLineError(origin + ": " + what + " is missing or empty");
+  const std::string why = whyUnsendable(bare);
+  if (!why.empty()) throw CommandLineError(origin + ": " + what + " " + why);
   return bare;
 }
 

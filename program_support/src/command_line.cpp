@@ -10,6 +10,7 @@
 #include <ostream>
 
 #include "lcmtf/printable.hpp"
+#include "lcmtf/sendable_names.hpp"
 
 namespace lcmtf::programs {
 
@@ -89,6 +90,14 @@ CLI::Validator finiteNumber() {
 CLI::Validator nonEmptyName() {
   return CLI::Validator(
       [](std::string& text) { return text.empty() ? std::string("must not be empty") : ""; }, "");
+}
+
+CLI::Validator sendableName() {
+  return CLI::Validator(
+      [](std::string& text) {
+        return text.empty() ? std::string("must not be empty") : whyUnsendable(text);
+      },
+      "");
 }
 
 CLI::Validator positiveFiniteNumber() {

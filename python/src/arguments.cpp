@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "lcmtf/sendable_names.hpp"
+
 namespace lcmtf::python {
 
 namespace {
@@ -50,6 +52,14 @@ std::string text(StrArg value, const char* argument) {
 std::string textOr(OptionalStrArg value, const char* argument, const std::string& fallback) {
   if (value.value.is_none()) return fallback;
   return text(StrArg{value.value}, argument);
+}
+
+std::string sendableTextOr(OptionalStrArg value, const char* argument,
+                           const std::string& fallback) {
+  std::string name = textOr(value, argument, fallback);
+  const std::string why = whyUnsendable(name);
+  if (!why.empty()) throw py::value_error(std::string(argument) + " " + why);
+  return name;
 }
 
 std::vector<std::string> textList(py::handle value, const char* argument) {

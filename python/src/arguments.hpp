@@ -48,6 +48,8 @@ using OptionalStrArg = Unchecked<OptionalStrType>;
 std::string text(StrArg value, const char* argument);
 /// A str, or `fallback` for None.
 std::string textOr(OptionalStrArg value, const char* argument, const std::string& fallback);
+/// The same, or ValueError naming `argument` when the name cannot be sent (whyUnsendable()).
+std::string sendableTextOr(OptionalStrArg value, const char* argument, const std::string& fallback);
 /// Every element a str; None gives none.
 std::vector<std::string> textList(py::handle value, const char* argument);
 /// An int from `least` to `most` (not a bool), or TypeError or ValueError naming `argument`.

@@ -11,6 +11,16 @@ namespace {
 using Dynamic = Closable<TransformBroadcaster>;
 using Static = Closable<StaticTransformBroadcaster>;
 
+// A name the broadcaster cannot send is refused naming the argument that held it.
+template <class Send>
+bool sendNaming(const char* argument, Send send) {
+  try {
+    return send();
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(std::string(argument) + " cannot be sent: " + e.what());
+  }
+}
+
 // send_transform, send_transforms and authority, which both broadcasters have.
 template <class Broadcaster>
 void defineSending(py::class_<Closable<Broadcaster>>& broadcaster_class, const char* one_doc,
@@ -20,13 +30,17 @@ void defineSending(py::class_<Closable<Broadcaster>>& broadcaster_class, const c
       .def(
           "send_transform",
           [](const Python& self, py::handle transform) {
-            return self.get().sendTransform(transformStamped(transform, "transform"));
+            return sendNaming("transform", [&] {
+              return self.get().sendTransform(transformStamped(transform, "transform"));
+            });
           },
           py::arg("transform"), one_doc)
       .def(
           "send_transforms",
           [](const Python& self, py::handle transforms) {
-            return self.get().sendTransform(transformStampedList(transforms, "transforms"));
+            return sendNaming("transforms", [&] {
+              return self.get().sendTransform(transformStampedList(transforms, "transforms"));
+            });
           },
           py::arg("transforms"), many_doc)
       .def_property_readonly(
@@ -39,7 +53,7 @@ std::unique_ptr<Dynamic> makeDynamic(OptionalStrArg lcm_url, StrArg channel,
                                      OptionalStrArg authority) {
   return std::make_unique<Dynamic>(std::make_unique<TransformBroadcaster>(
                                        textOr(lcm_url, "lcm_url", ""), text(channel, "channel"),
-                                       textOr(authority, "authority", defaultAuthority())),
+                                       sendableTextOr(authority, "authority", defaultAuthority())),
                                    "broadcaster");
 }
 
@@ -49,7 +63,7 @@ std::unique_ptr<Static> makeStatic(OptionalStrArg lcm_url, StrArg channel, StrAr
   options.lcm_url = textOr(lcm_url, "lcm_url", "");
   options.channel = text(channel, "channel");
   options.request_channel = text(request_channel, "request_channel");
-  options.authority = textOr(authority, "authority", options.authority);
+  options.authority = sendableTextOr(authority, "authority", options.authority);
   options.resend_period = duration(resend_period, "resend_period");
   return std::make_unique<Static>(std::make_unique<StaticTransformBroadcaster>(options),
                                   "static broadcaster");

@@ -48,7 +48,7 @@ std::unique_ptr<Listener> makeListener(
   options.max_authorities = count(max_authorities, "max_authorities", 1);
   options.queue_capacity = static_cast<int>(count(queue_capacity, "queue_capacity", 1, INT_MAX));
   options.queue_bytes = count(queue_bytes, "queue_bytes", 1);
-  options.authority = textOr(authority, "authority", defaults.authority);
+  options.authority = sendableTextOr(authority, "authority", defaults.authority);
   options.request_statics_at_start = request_statics_at_start;
   options.max_interpolation_gap = duration(max_interpolation_gap, "max_interpolation_gap");
   options.max_stamp_ahead = duration(max_stamp_ahead, "max_stamp_ahead");

@@ -114,6 +114,18 @@ CASES = {
     "broadcast a str": (
         lambda buffer: lcmtf.TransformBroadcaster("memq://").send_transform("map"), TypeError,
         "transform"),
+    "broadcast a name listeners refuse": (
+        lambda buffer: lcmtf.TransformBroadcaster("memq://").send_transform(
+            lcmtf.TransformStamped("map", "c" * 257, EPOCH)), ValueError, "transform"),
+    "broadcast a batch with a name listeners refuse": (
+        lambda buffer: lcmtf.TransformBroadcaster("memq://").send_transforms(
+            [GOOD, lcmtf.TransformStamped("p" * 300, "base", EPOCH)]), ValueError, "transforms"),
+    "broadcaster authority listeners refuse": (
+        lambda buffer: lcmtf.StaticTransformBroadcaster("memq://", authority="a" * 257),
+        ValueError, "authority"),
+    "listener authority listeners refuse": (
+        lambda buffer: lcmtf.TransformListener(buffer, "memq://", authority="a" * 257),
+        ValueError, "authority"),
     "resend period NaN": (
         lambda buffer: lcmtf.StaticTransformBroadcaster("memq://", resend_period=math.nan),
         ValueError, "resend_period"),

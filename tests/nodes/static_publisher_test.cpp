@@ -170,6 +170,16 @@ TEST(StaticPublisherCommandLine, MissingOrRepeatedFrameNamesAreRefused) {
               HasSubstr("frame 'base' cannot be its own parent"));
 }
 
+TEST(StaticPublisherCommandLine, NamesListenersWouldRefuseAreRefused) {
+  const std::string longer(257, 'c');
+  EXPECT_THAT(refusal({"0", "0", "0", "0", "0", "0", "base", longer}),
+              HasSubstr("the child frame (child_frame_id) is 257 bytes long: listeners refuse a "
+                        "batch with a name longer than 256 bytes"));
+  EXPECT_THAT(refusal({"--authority", longer, "0", "0", "0", "0", "0", "0", "base", "camera"}),
+              HasSubstr("--authority: is 257 bytes long"));
+  EXPECT_FALSE(parse({"0", "0", "0", "0", "0", "0", "base", std::string(256, 'c')}).status);
+}
+
 TEST(StaticPublisherCommandLine, NothingToPublishIsRefused) {
   EXPECT_THAT(refusal({}), HasSubstr("nothing to publish"));
   EXPECT_THAT(refusal({"--period", "2"}), HasSubstr("nothing to publish"));

@@ -296,6 +296,40 @@ TEST(RobotModel, LinksThatAreTheSameFrameAreRefused) {
             "test.urdf: link '/' names no frame (frame names drop one leading '/')");
 }
 
+TEST(RobotModel, ALinkNameListenersWouldRefuseIsRefused) {
+  const auto withChild = [](const std::string& child) {
+    return "<robot name='r'><link name='a'/><link name='" + child +
+           "'/><joint name='j' type='fixed'><parent link='a'/><child link='" + child +
+           "'/></joint></robot>";
+  };
+  EXPECT_EQ(refusal(withChild(std::string(256, 'l'))), "accepted");
+  EXPECT_EQ(refusal(withChild(std::string(257, 'l'))),
+            "test.urdf: link '" + std::string(60, 'l') +
+                "...' is 257 bytes long: listeners refuse a batch with a name "
+                "longer than 256 bytes");
+}
+
+TEST(RobotModel, RobotAndJointNamesListenersWouldRefuseAreRefused) {
+  const std::string longer(257, 'n');
+  EXPECT_THAT(refusal("<robot name='" + longer + "'><link name='a'/></robot>"),
+              HasSubstr("test.urdf: robot name 'nnn"));
+  EXPECT_THAT(refusal("<robot name='r'><link name='a'/><link name='b'/><joint name='" + longer +
+                      "' type='continuous'><parent link='a'/><child link='b'/></joint></robot>"),
+              HasSubstr("test.urdf: joint 'nnn"));
+}
+
+TEST(RobotModel, AFramePrefixThatMakesALinkNameTooLongIsRefused) {
+  const RobotModel robot = parseRobotModel(twoLinks("type='fixed'", ""), "test.urdf");
+  EXPECT_NO_THROW(requireSendableNames(robot, std::string(255, 'p')));
+  try {
+    requireSendableNames(robot, std::string(256, 'p'));
+    ADD_FAILURE() << "accepted";
+  } catch (const UrdfError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("test.urdf: frame prefix and link 'ppp"));
+    EXPECT_THAT(e.what(), HasSubstr("is 257 bytes long"));
+  }
+}
+
 TEST(RobotModel, MimicOfAnUnknownJointIsRefused) {
   EXPECT_EQ(refusal(chainOfMimics("<mimic joint='nothing'/></joint>")),
             "test.urdf: joint 'j2' mimics 'nothing', which is not a joint of the robot");

@@ -44,6 +44,12 @@ struct Recorder {
   int undecodable = 0;
 };
 
+std::string twoLinkUrdf(const std::string& parent, const std::string& child) {
+  return "<robot name='two'><link name='" + parent + "'/><link name='" + child +
+         "'/><joint name='j' type='continuous'><parent link='" + parent + "'/><child link='" +
+         child + "'/></joint></robot>";
+}
+
 resend_request_t request() {
   resend_request_t message{};
   message.utime = kStamp;
@@ -302,6 +308,36 @@ TEST_F(UrdfPublisherTest, ABadNewDescriptionKeepsTheRobotAndIsReportedOnce) {
   EXPECT_EQ(publisher.descriptionsRefused(), 1u);
   ASSERT_EQ(reports_.size(), 1u);
   EXPECT_THAT(reports_[0], HasSubstr("kept the robot, refused a new robot description: "));
+}
+
+TEST_F(UrdfPublisherTest, ANewDescriptionWhoseLinksThePrefixMakesTooLongIsRefused) {
+  UrdfPublisherOptions following = options();
+  following.follow_description = true;
+  following.joint_states.frame_prefix = std::string(250, 'p');
+  UrdfPublisher publisher(lcm_, parseRobotModel(twoLinkUrdf("a", "b"), "test"), following);
+  robot_description_t longer = makeRobotDescription(robot_, "owner");
+  longer.urdf = twoLinkUrdf("a", "gripper");
+  lcm_.publish(kRobotDescriptionChannel, &longer);
+  handleAll();
+  publisher.poll();
+  EXPECT_EQ(publisher.robotsReplaced(), 0u);
+  EXPECT_EQ(publisher.descriptionsRefused(), 1u);
+  ASSERT_EQ(reports_.size(), 1u);
+  EXPECT_THAT(reports_[0], HasSubstr("frame prefix and link 'ppp"));
+  EXPECT_THAT(reports_[0], HasSubstr("is 257 bytes long"));
+}
+
+TEST_F(UrdfPublisherTest, APrefixThatMakesALinkTooLongIsRefusedAtTheStart) {
+  UrdfPublisherOptions prefixed = options();
+  prefixed.joint_states.frame_prefix = std::string(250, 'p');
+  EXPECT_THROW(UrdfPublisher(lcm_, parseRobotModel(twoLinkUrdf("a", "gripper"), "test"), prefixed),
+               UrdfError);
+  UrdfPublisherOptions signed_long = options();
+  signed_long.joint_states.authority = std::string(257, 's');
+  EXPECT_THROW(UrdfPublisher(lcm_, robot_, signed_long), std::invalid_argument);
+  handleAll();
+  EXPECT_TRUE(statics_.messages.empty());
+  EXPECT_TRUE(descriptions_.messages.empty());
 }
 
 TEST_F(UrdfPublisherTest, EveryChannelCanBeChanged) {

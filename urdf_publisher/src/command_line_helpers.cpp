@@ -21,7 +21,7 @@ void addRobotSourceOptions(CLI::App& app, const RobotSourceArguments& arguments)
   arguments.authority = programs::programAuthority(app.get_name());
   app.add_option("--authority", arguments.authority,
                  "Names this program in what it sends (default: program@host:pid)")
-      ->check(programs::nonEmptyName())
+      ->check(programs::sendableName())
       ->type_name("NAME");
 }
 

@@ -10,6 +10,7 @@
 
 #include "lcmtf/frame_name.hpp"
 #include "lcmtf/programs/number_text.hpp"
+#include "lcmtf/sendable_names.hpp"
 #include "lcmtf_urdf/urdfdom_parse.hpp"
 #include "mimic_chains.hpp"
 
@@ -205,7 +206,20 @@ RobotModel parseRobotModel(const std::string& urdf, const std::string& source) {
   robot.urdf = urdf;
   ModelBuilder(*parsed, robot).build();
   resolveMimicChains(robot);
+  requireSendableNames(robot, "");
   return robot;
+}
+
+void requireSendableNames(const RobotModel& robot, const std::string& frame_prefix) {
+  const auto require = [&robot](std::string_view what, const std::string& name) {
+    const std::string problem = unsendableNameProblem(what, name);
+    if (!problem.empty()) throw UrdfError(robot.source + ": " + problem);
+  };
+  require("robot name", robot.name);
+  for (const std::string& link : robot.links) {
+    require(frame_prefix.empty() ? "link" : "frame prefix and link", frame_prefix + link);
+  }
+  for (const MovableJoint& joint : robot.movable_joints) require("joint", joint.name);
 }
 
 }  // namespace lcmtf::urdf

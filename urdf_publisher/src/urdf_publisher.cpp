@@ -1,6 +1,7 @@
 #include "lcmtf_urdf/urdf_publisher.hpp"
 
 #include "lcmtf/resend_request_t.hpp"
+#include "lcmtf/sendable_names.hpp"
 #include "lcmtf/wire_decode.hpp"
 #include "lcmtf_urdf/robot_description.hpp"
 
@@ -26,6 +27,9 @@ UrdfPublisher::UrdfPublisher(lcm::LCM& lcm, RobotModel robot, UrdfPublisherOptio
       processor_(robot_, options_.joint_states),
       tf_numbering_(options_.tf_channel, options_.joint_states.authority),
       description_problems_(options_.joint_states.reporter) {
+  // Before subscribing: a constructor that throws leaves nothing subscribed to it.
+  requireSendable({}, options_.joint_states.authority);
+  requireSendableNames(robot_, options_.joint_states.frame_prefix);
   joint_state_queue_.emplace(
       lcm_.subscribe(options_.joint_states_channel, &UrdfPublisher::onJointState, this),
       options_.joint_states_channel, options_.queue_bytes, options_.queue_capacity);
@@ -84,7 +88,10 @@ void UrdfPublisher::onDescription(const lcm::ReceiveBuffer* buffer, const std::s
   const std::string& current = next_robot_ ? next_robot_->urdf : robot_.urdf;
   if (description.urdf == current || description.urdf == refused_urdf_) return;
   try {
-    next_robot_ = parseRobotModel(description.urdf, channel + " from " + description.authority);
+    RobotModel robot =
+        parseRobotModel(description.urdf, channel + " from " + description.authority);
+    requireSendableNames(robot, options_.joint_states.frame_prefix);
+    next_robot_ = std::move(robot);
   } catch (const UrdfError& e) {
     ++descriptions_refused_;
     refused_urdf_ = description.urdf;

@@ -7,6 +7,7 @@
 #include "lcmtf/printable.hpp"
 #include "lcmtf/programs/lcm_connection.hpp"
 #include "lcmtf/programs/stop_signal.hpp"
+#include "lcmtf/sendable_names.hpp"
 #include "lcmtf_urdf/robot_description.hpp"
 #include "lcmtf_urdf/robot_summary.hpp"
 #include "program_helpers.hpp"
@@ -29,6 +30,17 @@ constexpr const char* kExamples =
     "  lcmtf-urdf-publisher --frame-prefix robot1/ robot.urdf\n"
     "  lcmtf-urdf-publisher                            the robot from ROBOT_DESCRIPTION";
 
+// Whether every link can be sent as a frame name after `prefix`; if not, says why.
+bool sendable(const RobotModel& robot, const std::string& prefix, const ProgramOutput& output) {
+  try {
+    requireSendableNames(robot, prefix);
+    return true;
+  } catch (const UrdfError& e) {
+    output.complain(e.what());
+    return false;
+  }
+}
+
 }  // namespace
 
 ParsedCommandLine<UrdfPublisherConfig> parseUrdfPublisherCommandLine(
@@ -43,7 +55,9 @@ ParsedCommandLine<UrdfPublisherConfig> parseUrdfPublisherCommandLine(
   addRobotSourceOptions(app, {config.urdf_path, config.lcm_url, p.description_channel,
                               p.description_request_channel, p.joint_states.authority});
   app.add_option("--frame-prefix", p.joint_states.frame_prefix,
-                 "Written before every link name, as is (e.g. robot1/)");
+                 "Written before every link name, as is (e.g. robot1/)")
+      ->check(CLI::Validator(
+          [](std::string& prefix) { return prefix.empty() ? "" : whyUnsendable(prefix); }, ""));
   app.add_option("--publish-frequency", p.joint_states.publish_frequency,
                  "At most this many batches per second for each joint, on the joint states' "
                  "stamps; 0 publishes every joint state")
@@ -89,6 +103,7 @@ int runUrdfPublisher(const UrdfPublisherConfig& config, const std::atomic<bool>&
 
   std::optional<RobotModel> robot = loadFromFile(config.urdf_path, output);
   if (!config.urdf_path.empty() && !robot) return 1;
+  if (robot && !sendable(*robot, prefix, output)) return 1;
   if (config.check_only) {
     out << terminalSafe(describeRobot(*robot, prefix, true));
     return 0;
@@ -103,6 +118,7 @@ int runUrdfPublisher(const UrdfPublisherConfig& config, const std::atomic<bool>&
     options.publish_description = false;  // it is another program's to publish
     options.follow_description = true;
   }
+  if (!sendable(*robot, prefix, output)) return 1;
   // Subscribed before it says so, so that whoever waits for the line may publish at once.
   UrdfPublisher publisher(*lcm, std::move(*robot), options);
   output.say(describeRobot(publisher.robot(), prefix) + "  joint states from " +

@@ -33,7 +33,8 @@ struct StaticBroadcasterOptions {
 /// late joiner gets the static tree within milliseconds and a lost packet heals by itself.
 class StaticTransformBroadcaster {
  public:
-  /// Owns an LCM and a thread that answers requests and resends.
+  /// Owns an LCM and a thread that answers requests and resends. Both constructors throw
+  /// std::invalid_argument when the authority cannot be sent (whyUnsendable()).
   explicit StaticTransformBroadcaster(StaticBroadcasterOptions options = {});
   /// Uses the application's LCM: its handle loop delivers requests, and the application calls
   /// resendIfDue() from time to time. `lcm` must outlive the broadcaster.
@@ -43,6 +44,8 @@ class StaticTransformBroadcaster {
   StaticTransformBroadcaster& operator=(const StaticTransformBroadcaster&) = delete;
 
   /// Adds or replaces the transforms of these child frames, then publishes the whole set.
+  /// Throws std::invalid_argument, and keeps none of them, when a frame name cannot be sent
+  /// (whyUnsendable()): the set would carry it in every batch from then on.
   bool sendTransform(const TransformStamped& transform);
   bool sendTransform(const std::vector<TransformStamped>& transforms);
   /// Publishes the whole set when resend_period has passed since it was last published.

@@ -21,14 +21,16 @@ tf_message_t makeTfMessage(const std::vector<TransformStamped>& transforms,
 /// Publishes dynamic transforms: one tf_message_t per sendTransform call, numbered.
 class TransformBroadcaster {
  public:
-  /// Publishes through the application's LCM, which must outlive the broadcaster.
+  /// Publishes through the application's LCM, which must outlive the broadcaster. Throws
+  /// std::invalid_argument when `authority` cannot be sent (whyUnsendable()).
   explicit TransformBroadcaster(lcm::LCM& lcm, std::string channel = kTfChannel,
                                 std::string authority = defaultAuthority());
   /// Publishes through an LCM of its own on `lcm_url` ("" for LCM's default).
   explicit TransformBroadcaster(const std::string& lcm_url, std::string channel = kTfChannel,
                                 std::string authority = defaultAuthority());
 
-  /// False when LCM could not publish.
+  /// False when LCM could not publish. Throws std::invalid_argument, and sends nothing, when
+  /// a frame name cannot be sent (whyUnsendable()).
   bool sendTransform(const TransformStamped& transform);
   bool sendTransform(const std::vector<TransformStamped>& transforms);
 

@@ -86,5 +86,8 @@ struct RobotModel {
 RobotModel loadRobotModel(const std::string& path);
 /// Parses and checks URDF text; `source` names it in errors ("ROBOT_DESCRIPTION from x@y:1").
 RobotModel parseRobotModel(const std::string& urdf, const std::string& source);
+/// Throws UrdfError when a name of `robot` cannot be sent (lcmtf::whyUnsendable()): its own, a
+/// link's with `frame_prefix` before it, or a movable joint's, which joint states carry.
+void requireSendableNames(const RobotModel& robot, const std::string& frame_prefix);
 
 }  // namespace lcmtf::urdf

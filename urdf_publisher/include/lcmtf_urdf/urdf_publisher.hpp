@@ -44,6 +44,8 @@ struct UrdfPublisherOptions {
 class UrdfPublisher {
  public:
   /// Subscribes on `lcm` (which must outlive it) and publishes the statics and description.
+  /// Throws, subscribing nothing, std::invalid_argument when the authority cannot be sent and
+  /// UrdfError when a link with the frame prefix cannot (lcmtf::whyUnsendable()).
   UrdfPublisher(lcm::LCM& lcm, RobotModel robot, UrdfPublisherOptions options = {});
   ~UrdfPublisher();
   UrdfPublisher(const UrdfPublisher&) = delete;

@@ -52,6 +52,9 @@ CLI::Validator positiveFiniteNumberUpTo(double most);
 CLI::Validator finiteNumberIn(double lower, double upper);
 /// A validator refusing the empty string (channel and frame names).
 CLI::Validator nonEmptyName();
+/// A validator refusing a name that cannot be sent as a frame or sender name (empty, or as
+/// whyUnsendable() says).
+CLI::Validator sendableName();
 
 /// An option naming an LCM channel: not empty, its default shown in the help.
 CLI::Option* addChannelOption(CLI::App& app, const std::string& name, std::string& channel,
