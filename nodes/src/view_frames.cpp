@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <ostream>
 
@@ -43,6 +44,15 @@ std::string withoutDrawingExtension(const std::string& path) {
   return path;
 }
 
+// A folder, named as one or already there, gets frames.gv, frames.pdf and frames.svg.
+std::string outputStem(const std::string& path) {
+  std::error_code error;
+  if (path.back() == '/' || std::filesystem::is_directory(path, error)) {
+    return (std::filesystem::path(path) / kDefaultStem).string();
+  }
+  return withoutDrawingExtension(path);
+}
+
 std::string plural(std::size_t count, const std::string& word) {
   return std::to_string(count) + " " + word + (count == 1 ? "" : "s");
 }
@@ -61,14 +71,14 @@ std::optional<int> parseViewFramesCommandLine(const std::vector<std::string>& ar
       ->capture_default_str();
   app->add_option("-o,--output", options.output,
                   "Path of the files, with or without an extension; .gv, .pdf, .svg are put "
-                  "in place of the extension")
+                  "in place of the extension. A folder gets frames.gv, frames.pdf, frames.svg")
       ->check(nonEmptyName())
       ->type_name("PATH")
       ->capture_default_str();
   app->add_flag("--dot-only", dot_only, "Write only the .gv file, even with Graphviz installed");
   addConnectionOptions(*app, options.connection);
   if (auto status = parseCommandLine(*app, args, out, err)) return status;
-  options.output = withoutDrawingExtension(options.output);
+  options.output = outputStem(options.output);
   options.wait = secondsToDuration(wait_seconds);
   options.render = !dot_only;
   return std::nullopt;

@@ -41,6 +41,17 @@ TEST(ViewFramesCommandLine, OutputMayBeGivenWithTheExtensionOfOneOfItsFiles) {
   EXPECT_EQ(parse({"--output", "/tmp/.gv"}).options.output, "/tmp/.gv");
 }
 
+TEST(ViewFramesCommandLine, AFolderNamedAsOneGetsTheFilesInside) {
+  EXPECT_EQ(parse({"--output", "robot_trees/"}).options.output, "robot_trees/frames");
+}
+
+TEST(ViewFramesCommandLine, AFolderThereGetsTheFilesInside) {
+  const std::filesystem::path directory = lcmtf_test::makeTemporaryDirectory("view-frames");
+  EXPECT_EQ(parse({"--output", directory.string()}).options.output,
+            (directory / "frames").string());
+  std::filesystem::remove_all(directory);
+}
+
 TEST(ViewFramesCommandLine, BadArgumentsAreNamed) {
   EXPECT_THAT(parse({"--wait", "0"}).err, HasSubstr("--wait: '0' is not a number in (0, 3600]"));
   EXPECT_THAT(parse({"--wait", "soon"}).err, HasSubstr("--wait: 'soon'"));

@@ -1,10 +1,12 @@
 // Every program follows one command-line convention: --help and --version exit 0, a bad
-// argument or --lcm-url exits 2 naming it, and a program that talks says on which URL.
+// argument, a file it names or --lcm-url exits 2 naming it, and a program that talks says on
+// which URL.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support/child_process.hpp"
@@ -85,6 +87,21 @@ TEST_P(EveryProgram, ARunningProgramSaysTheUrlItTalksOn) {
 }
 
 const std::vector<std::string> kPose{"0", "0", "0", "0", "0", "0", "base", "camera"};
+
+// A file named on the command line is an argument too: one that is not there exits 2.
+TEST(ProgramsReadingFiles, AFileThatIsNotThereExitsTwoNamingIt) {
+  const std::string missing = "/nonexistent-folder/robot.urdf";
+  const std::vector<std::pair<std::string, std::vector<std::string>>> runs = {
+      {LCMTF_STATIC_PUBLISHER_PATH, {"--file", "/nonexistent-folder/mounts.yaml"}},
+      {LCMTF_URDF_PUBLISHER_PATH, {missing}},
+      {LCMTF_JOINT_PUBLISHER_PATH, {missing}},
+      {LCMTF_VIEWER_PATH, {"--port", "0", "--urdf", missing}}};
+  for (const auto& [path, arguments] : runs) {
+    ChildProcess program(path, with({"--lcm-url", "memq://"}, arguments));
+    EXPECT_EQ(program.waitForExit(10s), std::optional<int>(2)) << path << program.stderrText();
+    EXPECT_THAT(program.stderrText(), HasSubstr("/nonexistent-folder/")) << path;
+  }
+}
 
 INSTANTIATE_TEST_SUITE_P(
     Programs, EveryProgram,

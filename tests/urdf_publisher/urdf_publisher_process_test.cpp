@@ -266,16 +266,17 @@ TEST(UrdfPublisherProcess, SigintAndSigtermStopBothProgramsCleanly) {
               HasSubstr("lcmtf-joint-publisher: stopped after 1 joint states"));
 }
 
-TEST(UrdfPublisherProcess, InvalidRobotsExitNonZeroNamingTheFileAndProblem) {
+// Status 2, as for any file a command line names that is wrong.
+TEST(UrdfPublisherProcess, InvalidRobotsExitTwoNamingTheFileAndProblem) {
   const std::string broken = testing::TempDir() + "/no_root.urdf";
   std::ofstream(broken) << "<robot name='r'><link name='a'/><link name='b'/></robot>";
   for (const char* program : {URDF_PUBLISHER_PROGRAM, JOINT_PUBLISHER_PROGRAM}) {
     ChildProcess missing(program, {"--lcm-url", testUrl(), "/nonexistent/robot.urdf"});
-    EXPECT_EQ(missing.waitForExit(kStartup), 1) << program;
+    EXPECT_EQ(missing.waitForExit(kStartup), 2) << program;
     EXPECT_THAT(missing.stderrText(),
                 HasSubstr("/nonexistent/robot.urdf: cannot open: No such file"));
     ChildProcess no_root(program, {"--lcm-url", testUrl(), broken});
-    EXPECT_EQ(no_root.waitForExit(kStartup), 1) << program;
+    EXPECT_EQ(no_root.waitForExit(kStartup), 2) << program;
     EXPECT_THAT(no_root.stderrText(),
                 HasSubstr(broken + ": invalid URDF: Failed to find root link: "
                                    "Two root links found"));
@@ -296,7 +297,7 @@ TEST(UrdfPublisherProcess, CheckRefusesFilesTooDeepOrWithTooManyLinksNamingTheLi
       {chain, ": 150000 links; the limit is 10000"}};
   for (const auto& [file, refusal] : refusals) {
     ChildProcess check(URDF_PUBLISHER_PROGRAM, {"--check", file});
-    EXPECT_EQ(check.waitForExit(kStartup), 1) << file;
+    EXPECT_EQ(check.waitForExit(kStartup), 2) << file;
     EXPECT_EQ(check.stderrText(), "lcmtf-urdf-publisher: " + file + refusal + "\n");
     EXPECT_EQ(check.stdoutText(), "");
   }

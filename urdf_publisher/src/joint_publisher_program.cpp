@@ -123,7 +123,7 @@ int runJointPublisher(const JointPublisherConfig& config, const std::atomic<bool
                       std::ostream& out, std::ostream& err) {
   const ProgramOutput output{kProgram, out, err};
   std::optional<RobotModel> robot = loadFromFile(config.urdf_path, output);
-  if (!config.urdf_path.empty() && !robot) return 1;
+  if (!config.urdf_path.empty() && !robot) return programs::kExitBadArguments;
   const std::unique_ptr<lcm::LCM> lcm = programs::openLcmOrReport(config.lcm_url, kProgram, err);
   if (!lcm) return programs::kExitBadArguments;
   const auto run_start = std::chrono::steady_clock::now();

@@ -102,8 +102,8 @@ int runUrdfPublisher(const UrdfPublisherConfig& config, const std::atomic<bool>&
   const std::string& prefix = options.joint_states.frame_prefix;
 
   std::optional<RobotModel> robot = loadFromFile(config.urdf_path, output);
-  if (!config.urdf_path.empty() && !robot) return 1;
-  if (robot && !sendable(*robot, prefix, output)) return 1;
+  if (!config.urdf_path.empty() && !robot) return programs::kExitBadArguments;
+  if (robot && !sendable(*robot, prefix, output)) return programs::kExitBadArguments;
   if (config.check_only) {
     out << terminalSafe(describeRobot(*robot, prefix, true));
     return 0;
@@ -118,7 +118,7 @@ int runUrdfPublisher(const UrdfPublisherConfig& config, const std::atomic<bool>&
     options.publish_description = false;  // it is another program's to publish
     options.follow_description = true;
   }
-  if (!sendable(*robot, prefix, output)) return 1;
+  if (!sendable(*robot, prefix, output)) return programs::kExitFailure;
   // Subscribed before it says so, so that whoever waits for the line may publish at once.
   UrdfPublisher publisher(*lcm, std::move(*robot), options);
   output.say(describeRobot(publisher.robot(), prefix) + "  joint states from " +

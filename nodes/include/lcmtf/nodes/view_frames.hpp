@@ -14,12 +14,15 @@
 
 namespace lcmtf::nodes {
 
+/// Where lcmtf-view-frames writes unless told, and what it calls the files in a folder it is given.
+constexpr const char* kDefaultStem = "frames";
+
 /// How long lcmtf-view-frames listens and where it writes the tree.
 struct ViewFramesOptions {
   TfConnection connection;
   Duration wait = std::chrono::seconds(5);
-  std::string output = "frames";  ///< writes output.gv, and output.pdf and output.svg
-  bool render = true;             ///< draw PDF and SVG when Graphviz's dot is on PATH
+  std::string output = kDefaultStem;  ///< writes output.gv, and output.pdf and output.svg
+  bool render = true;                 ///< draw PDF and SVG when Graphviz's dot is on PATH
 };
 
 /// Reads the command line into `options`; the exit status when the tool must not run.
