@@ -67,7 +67,7 @@ class EchoLoop {
       if (printed && !tick) continue;
       const TimePoint time = options_.time.at(now());
       if (tryPrint(time)) {
-        if (options_.once) return kExitSuccess;
+        if (options_.once) return said_not_finite_ ? kExitFailure : kExitSuccess;
         printed = true;
         next_tick = now_steady + period;
         continue;
@@ -137,6 +137,7 @@ class EchoLoop {
           buffer_.lookupTransform(options_.reference_frame, options_.frame, time);
       out_ << formatPose(reference_T_frame, now(), options_.precision) << std::flush;
       if (options_.time.kind == EchoTime::Kind::kLatest) noteFreshness(reference_T_frame.stamp);
+      noteNotFinite(reference_T_frame);
       return true;
     } catch (const TransformException&) {
       return false;
@@ -163,6 +164,15 @@ class EchoLoop {
            " of history kept behind the newest data of every edge between them (the oldest "
            "instant all of them hold is " +
            toString(oldest_kept) + ")";
+  }
+
+  // Edges each finite may still sum past what a double holds. Said once.
+  void noteNotFinite(const TransformStamped& reference_T_frame) {
+    if (said_not_finite_ || reference_T_frame.transform.translation.allFinite()) return;
+    said_not_finite_ = true;
+    err_ << kProgram << ": the translation is not finite: the edges between '"
+         << options_.reference_frame << "' and '" << options_.frame
+         << "' are each finite but too far to add up in double precision" << std::endl;
   }
 
   // Says once when the latest data stops changing (its publishers stopped), and once when it
@@ -196,6 +206,7 @@ class EchoLoop {
   std::optional<TimePoint> newest_stamp_;
   std::chrono::steady_clock::time_point newest_changed_;
   bool stale_ = false;
+  bool said_not_finite_ = false;
 };
 
 }  // namespace

@@ -214,6 +214,26 @@ TEST(Echo, RunPrintsThePoseOnceItArrives) {
               HasSubstr("'camera' in 'base'\n  translation (m)    [0.000, 0.000, 2.000]"));
 }
 
+// Printed, as it is, but no pose a caller of --once can use.
+TEST(Echo, ATranslationTooFarToAddUpIsSaidToBeNotFiniteAndOnceExitsOne) {
+  const std::string url = lcmtf_test::privateUdpmUrl("Echo.ATranslationTooFarToAddUp");
+  StaticBroadcasterOptions broadcaster_options;
+  broadcaster_options.lcm_url = url;
+  broadcaster_options.resend_period = std::chrono::milliseconds(50);
+  StaticTransformBroadcaster broadcaster(broadcaster_options);
+  const Transform far({1e308, 0.0, 0.0}, {1, 0, 0, 0});
+  broadcaster.sendTransform({{kStamp, "a", "b", far}, {kStamp, "b", "c", far}});
+
+  std::ostringstream out, err;
+  const std::atomic<bool> stop{false};
+  const int status =
+      echoCommand({"--lcm-url", url, "--once", "--timeout", "10", "a", "c"}, out, err, stop);
+  EXPECT_EQ(status, kExitFailure) << err.str();
+  EXPECT_THAT(out.str(), HasSubstr("translation (m)    [inf, 0.000, 0.000]"));
+  EXPECT_THAT(err.str(), HasSubstr("lcmtf-echo: the translation is not finite: the edges between "
+                                   "'a' and 'c' are each finite but too far to add up"));
+}
+
 // A sender whose clock runs a minute ahead of this one: lcmtf-echo says why it refuses its
 // transforms, and prints the pose once told to take any stamp.
 TEST(Echo, TransformsStampedAMinuteAheadAreRefusedSayingWhyUnlessTheLimitIsLifted) {
