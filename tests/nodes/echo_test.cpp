@@ -197,12 +197,17 @@ TEST(EchoMissing, SaysWhyKnownFramesCannotBeLookedUp) {
               HasSubstr("extrapolation into the future"));
 }
 
+// A static broadcaster on `url` that sends its set again every 50 ms.
+StaticBroadcasterOptions resendingOften(const std::string& url) {
+  StaticBroadcasterOptions options;
+  options.lcm_url = url;
+  options.resend_period = std::chrono::milliseconds(50);
+  return options;
+}
+
 TEST(Echo, RunPrintsThePoseOnceItArrives) {
   const std::string url = lcmtf_test::privateUdpmUrl("Echo.RunPrintsThePoseOnceItArrives");
-  StaticBroadcasterOptions broadcaster_options;
-  broadcaster_options.lcm_url = url;
-  broadcaster_options.resend_period = std::chrono::milliseconds(50);
-  StaticTransformBroadcaster broadcaster(broadcaster_options);
+  StaticTransformBroadcaster broadcaster(resendingOften(url));
   broadcaster.sendTransform({kStamp, "base", "camera", Transform({0.0, 0.0, 2.0}, {1, 0, 0, 0})});
 
   std::ostringstream out, err;
@@ -217,10 +222,7 @@ TEST(Echo, RunPrintsThePoseOnceItArrives) {
 // Printed, as it is, but no pose a caller of --once can use.
 TEST(Echo, ATranslationTooFarToAddUpIsSaidToBeNotFiniteAndOnceExitsOne) {
   const std::string url = lcmtf_test::privateUdpmUrl("Echo.ATranslationTooFarToAddUp");
-  StaticBroadcasterOptions broadcaster_options;
-  broadcaster_options.lcm_url = url;
-  broadcaster_options.resend_period = std::chrono::milliseconds(50);
-  StaticTransformBroadcaster broadcaster(broadcaster_options);
+  StaticTransformBroadcaster broadcaster(resendingOften(url));
   const Transform far({1e308, 0.0, 0.0}, {1, 0, 0, 0});
   broadcaster.sendTransform({{kStamp, "a", "b", far}, {kStamp, "b", "c", far}});
 
