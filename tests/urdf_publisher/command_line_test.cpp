@@ -217,9 +217,9 @@ ProgramRun runUrdfPublisherWith(const std::vector<std::string>& arguments,
   return run;
 }
 
-TEST(UrdfPublisherRun, MissingFileExitsOneNamingIt) {
+TEST(UrdfPublisherRun, MissingFileExitsTwoNamingIt) {
   const ProgramRun run = runUrdfPublisherWith({"/nonexistent/robot.urdf"});
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(run.err,
             "lcmtf-urdf-publisher: /nonexistent/robot.urdf: cannot open: No such file or "
             "directory\n");
@@ -393,7 +393,7 @@ TEST(JointPublisherRun, HoldingAnUnknownJointExitsTwoNamingItAndTheJointMeant) {
                                   "'elbow_joint'?)"));
 }
 
-TEST(JointPublisherRun, InvalidUrdfExitsOneNamingTheFileAndProblem) {
+TEST(JointPublisherRun, InvalidUrdfExitsTwoNamingTheFileAndProblem) {
   const std::string path = testing::TempDir() + "/zero_axis.urdf";
   {
     std::ofstream(path) << "<robot name='r'><link name='a'/><link name='b'/><joint name='j' "
@@ -401,7 +401,7 @@ TEST(JointPublisherRun, InvalidUrdfExitsOneNamingTheFileAndProblem) {
                            "<axis xyz='0 0 0'/></joint></robot>";
   }
   const ProgramRun run = runJointPublisherWith({"--lcm-url", "memq://", path});
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(run.err, "lcmtf-joint-publisher: " + path +
                          ": joint 'j' has a zero axis (0 0 0): it cannot say which way the "
                          "joint moves\n");
