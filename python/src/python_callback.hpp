@@ -77,14 +77,15 @@ inline std::function<void(const std::string&)> messageCallback(CallableCellPtr c
 }
 
 /// The cell a Python object of a bound type holds, or null when it holds none or its C++
-/// object is not made yet (the collector may look before __init__ has run).
+/// object is not made yet (the collector may look while __init__ runs). Read from the
+/// instance's own record: casting would have pybind11 allocate the missing C++ object, in the
+/// middle of a collection, and hand back memory nobody constructed.
 template <class Cpp, CallableCell* (*CellOf)(Cpp&)>
 CallableCell* cellIn(PyObject* self) {
-  try {
-    return CellOf(py::cast<Cpp&>(py::handle(self)));
-  } catch (const std::exception&) {
-    return nullptr;
-  }
+  auto* instance = reinterpret_cast<py::detail::instance*>(self);
+  const py::detail::value_and_holder held = instance->get_value_and_holder();
+  if (!held.holder_constructed() || held.value_ptr() == nullptr) return nullptr;
+  return CellOf(*held.value_ptr<Cpp>());
 }
 
 /// Makes the objects of a bound type visible to the garbage collector through the callable

@@ -169,6 +169,20 @@ def test_an_object_whose_method_is_its_own_buffers_reporter_is_collected():
     assert gone() is None
 
 
+def test_a_collection_while_a_subclass_is_being_initialized_is_safe():
+    class Collecting(lcmtf.Buffer):
+        def __init__(self, reporter=None):
+            gc.collect()  # this object is tracked, and its C++ buffer is not made yet
+            super().__init__(reporter=reporter)
+
+    reports = []
+    for i in range(50):
+        buffer = Collecting(reporter=reports.append if i % 2 else lambda message: None)
+        assert buffer.set_transform(lcmtf.TransformStamped("a", "a", EPOCH), "test") is False
+        assert buffer.frames() == []
+    assert len(reports) == 25
+
+
 def test_velocity_of_the_turning_base():
     velocity = turning_buffer().lookup_velocity("base", "map", EPOCH + 0.5, 0.2)
     assert velocity.frame == "map"
