@@ -130,6 +130,39 @@ class Buffer:
         fixed: str,
         timeout: float = 0.0,
     ) -> TransformStamped: ...
+    def lookup_transform_full(
+        self,
+        target: str,
+        target_time: float,
+        source: str,
+        source_time: float,
+        fixed: str,
+        timeout: float = 0.0,
+    ) -> TransformStamped: ...
+    @overload
+    def can_transform_full(
+        self,
+        target: str,
+        target_time: float,
+        source: str,
+        source_time: float,
+        fixed: str,
+        timeout: float = 0.0,
+        *,
+        return_debug_tuple: Literal[False] = False,
+    ) -> bool: ...
+    @overload
+    def can_transform_full(
+        self,
+        target: str,
+        target_time: float,
+        source: str,
+        source_time: float,
+        fixed: str,
+        timeout: float = 0.0,
+        *,
+        return_debug_tuple: Literal[True],
+    ) -> Tuple[bool, str]: ...
     @overload
     def can_transform(
         self,

@@ -9,6 +9,17 @@ from . import _lcmtf
 class Buffer(_lcmtf.Buffer):
     __doc__ = _lcmtf.Buffer.__doc__
 
+    def lookup_transform_full(self, target, target_time, source, source_time, fixed,
+                              timeout=0.0):
+        """lookup_transform's time-travel form, under the name tf2_ros gives it."""
+        return self.lookup_transform(target, target_time, source, source_time, fixed, timeout)
+
+    def can_transform_full(self, target, target_time, source, source_time, fixed, timeout=0.0,
+                           *, return_debug_tuple=False):
+        """can_transform's time-travel form, under the name tf2_ros gives it."""
+        return self.can_transform(target, target_time, source, source_time, fixed, timeout,
+                                  return_debug_tuple=return_debug_tuple)
+
     def wait_for_transform(self, target, source, time, timeout, callback=None):
         """A concurrent.futures.Future of lookup_transform(target, source, time, timeout).
 

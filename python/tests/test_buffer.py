@@ -56,6 +56,18 @@ def test_time_travel_goes_through_the_fixed_frame():
     assert buffer.can_transform("camera", EPOCH + 0.9, "camera", EPOCH + 0.2, "map")
 
 
+def test_the_full_names_of_tf2_ros_are_time_travel_too():
+    buffer = turning_buffer()
+    arguments = ("camera", EPOCH + 0.9, "camera", EPOCH + 0.2, "map")
+    assert buffer.lookup_transform_full(*arguments) == buffer.lookup_transform(*arguments)
+    assert buffer.can_transform_full(*arguments)
+    available, why = buffer.can_transform_full("camera", EPOCH + 5, "camera", EPOCH, "map",
+                                               return_debug_tuple=True)
+    assert not available and "extrapolation into the future" in why.lower(), why
+    with pytest.raises(lcmtf.ExtrapolationException):
+        buffer.lookup_transform_full("camera", EPOCH + 5, "camera", EPOCH, "map")
+
+
 def test_transform_stamped_holds_what_it_was_given():
     t = lcmtf.TransformStamped("a", "b", EPOCH + 0.25, (1, 2, 3), (0, 0, 0.6, 0.8))
     assert (t.parent_frame, t.child_frame, t.stamp) == ("a", "b", EPOCH + 0.25)

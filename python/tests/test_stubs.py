@@ -51,8 +51,12 @@ def runtime_signatures(function):
     """Each form of `function` as [(name, default)], from pybind11's docstring or inspect."""
     name = function.__name__
     if inspect.isfunction(function):
-        parameters = list(inspect.signature(function).parameters.values())[1:]
-        return [[(p.name, p.default if p.default is not p.empty else ...) for p in parameters]]
+        form = []
+        for p in list(inspect.signature(function).parameters.values())[1:]:
+            if p.kind is p.KEYWORD_ONLY and ("*", ...) not in form:
+                form.append(("*", ...))  # as pybind11 writes the marker
+            form.append((p.name, p.default if p.default is not p.empty else ...))
+        return [form]
     forms = []
     for match in re.finditer(r"^(?:\d+\. )?" + name + r"\((.*)\) -> ", function.__doc__, re.M):
         form = []
