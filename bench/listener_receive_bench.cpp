@@ -19,7 +19,6 @@
 #include "lcmtf/transform_listener.hpp"
 #include "lcmtf/wire_decode.hpp"
 #include "positive_flags.hpp"
-#include "state_publisher.hpp"
 #include "tree_shapes.hpp"
 #ifdef LCMTF_BENCH_WITH_TF2
 #include "tf2_subject.hpp"
@@ -32,6 +31,49 @@ using Clock = std::chrono::steady_clock;
 struct Options {
   int rounds = 9;
   int batches = 1000;  // per round
+};
+
+lcmtf::Transform transformOf(const bench::Pose& p) {
+  return lcmtf::Transform(Eigen::Vector3d(p.x, p.y, p.z),
+                          Eigen::Quaterniond(p.qw, p.qx, p.qy, p.qz));
+}
+
+// A state publisher's batch for each step of the workload's motion: the step's sample of every
+// dynamic edge, with the poses the insert rows of buffer_core_bench give.
+class Publisher {
+ public:
+  explicit Publisher(const bench::Workload& w) : w_(w), dynamic_(bench::dynamicEdges(w)) {
+    for (std::size_t index : dynamic_) {
+      const bench::Edge& edge = w.edges[index];
+      batch_.push_back(lcmtf::TransformStamped{lcmtf::TimePoint{}, w.names[edge.parent],
+                                               w.names[edge.child], lcmtf::Transform::identity()});
+    }
+  }
+
+  std::size_t batchSize() const { return batch_.size(); }
+
+  const std::vector<lcmtf::TransformStamped>& batch(std::size_t step) {
+    for (std::size_t i = 0; i < dynamic_.size(); ++i) {
+      const bench::Edge& edge = w_.edges[dynamic_[i]];
+      batch_[i].stamp = lcmtf::fromUtime(w_.stamp(edge, step));
+      batch_[i].transform = transformOf(bench::insertedPose(edge, step));
+    }
+    return batch_;
+  }
+
+  const std::vector<std::uint8_t>& encoded(std::size_t step) {
+    lcmtf::tf_message_t message = lcmtf::makeTfMessage(batch(step), "robot_state_publisher");
+    message.sequence = static_cast<std::int64_t>(step + 1);
+    bytes_.resize(static_cast<std::size_t>(message.getEncodedSize()));
+    message.encode(bytes_.data(), 0, static_cast<int>(bytes_.size()));
+    return bytes_;
+  }
+
+ private:
+  const bench::Workload& w_;
+  std::vector<std::size_t> dynamic_;
+  std::vector<lcmtf::TransformStamped> batch_;
+  std::vector<std::uint8_t> bytes_;
 };
 
 // One way in, timed batch by batch: `prepare(step)` (untimed) readies the step's batch and
@@ -73,7 +115,7 @@ void printWay(const Way& way) {
 }
 
 void measure(const bench::Workload& w, const Options& options) {
-  bench::Publisher publisher(w);
+  Publisher publisher(w);
   const std::size_t batch_size = publisher.batchSize();
 
   lcm::LCM lcm("memq://");
@@ -120,7 +162,7 @@ void measure(const bench::Workload& w, const Options& options) {
     tf2.set(index, 0, edge.samples[0], true);
 #endif
     const lcmtf::TransformStamped fixed{lcmtf::TimePoint{}, w.names[edge.parent],
-                                        w.names[edge.child], bench::transformOf(edge.samples[0])};
+                                        w.names[edge.child], transformOf(edge.samples[0])};
     listened.setTransform(fixed, "static_publisher", true);
     stored.setTransform(fixed, "static_publisher", true);
   }

@@ -1,14 +1,11 @@
 // What a profile-guided build of liblcmtf learns from (cmake/lcmtfProfileGuided.cmake): the
-// buffer's inserts and every kind of lookup, on the tree shapes buffer_core_bench measures, and
-// a listener receiving a state publisher's batches.
+// buffer's inserts and every kind of lookup, on the tree shapes buffer_core_bench measures.
 // It checks nothing and prints nothing; only the counts the instrumented library keeps matter.
 
 #include <cstddef>
 #include <cstdint>
 
-#include "lcmtf/transform_listener.hpp"
 #include "lcmtf_subject.hpp"
-#include "state_publisher.hpp"
 #include "tree_shapes.hpp"
 
 namespace {
@@ -50,20 +47,6 @@ void lookUp(const bench::LcmtfSubject& subject, const Workload& w, std::size_t r
   }
 }
 
-// A listener taking a state publisher's batches as LCM hands them over: decode, check, store.
-void receive(const Workload& w) {
-  bench::Publisher publisher(w);
-  lcm::LCM lcm("memq://");
-  lcmtf::Buffer listened(lcmtf::Duration(w.history()));
-  lcmtf::ListenerOptions listener_options;
-  listener_options.request_statics_at_start = false;
-  lcmtf::TransformListener listener(listened, lcm, listener_options);
-  for (std::size_t step = 0; step < 2 * w.samples; ++step) {
-    const std::vector<std::uint8_t>& bytes = publisher.encoded(step);
-    listener.handleMessage(bytes.data(), bytes.size(), lcmtf::kTfChannel);
-  }
-}
-
 }  // namespace
 
 int main() {
@@ -77,7 +60,6 @@ int main() {
     lookUp(subject, w, 8, sink);
     // Last: the lookups ask for times these push out of the history.
     insertPastHistory(subject, w, 50);
-    receive(w);
   }
   return sink.sum == -1.0 ? 1 : 0;
 }

@@ -1,11 +1,10 @@
 # A profile-guided liblcmtf: where the project is built on its own, in Release with GCC, the
 # build first makes an instrumented copy of the library in profile/build, runs
 # bench/profile_training.cpp on it, and compiles the library with the counts it left in
-# profile/data. GCC then lays out the lookups', inserts' and listener's code for the paths they
-# take. In buffer_core_bench (fastest of three runs each way, taking turns), lookups ran 3-19 %
-# faster so (pr2's random ones 3 %, its time-travel ones 7 %, wide's deepest 10 %,
-# deep_chain's latest-time ones 19 %), canTransform 11-14 %, inserts 4-7 %; in
-# listener_receive_bench, a listener's decode, check and store of a batch 5-9 %.
+# profile/data. GCC then lays out the lookups' and inserts' code for the paths they take. In
+# buffer_core_bench (fastest of three runs each way, taking turns), lookups ran 3-19 % faster
+# so (pr2's random ones 3 %, its time-travel ones 7 %, wide's deepest 10 %, deep_chain's
+# latest-time ones 19 %), canTransform 11-14 %, inserts 4 %.
 #
 # The training runs once per build directory. After the library's code changes, the counts
 # that no longer match are left unused (-Wno-coverage-mismatch); deleting profile/ retrains.
