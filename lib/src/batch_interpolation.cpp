@@ -8,28 +8,15 @@
 #include <cstdint>
 #include <cstring>
 
-#include "compose.hpp"
 #include "slerp_weights.hpp"
+#include "wide_transform.hpp"
 #include "wide_vectors.hpp"
 
 namespace lcmtf::detail {
 
 namespace {
 
-// Four lanes of doubles, one register wide where the processor has AVX2.
-using Four = double __attribute__((vector_size(4 * sizeof(double))));
-using FourBits = std::int64_t __attribute__((vector_size(4 * sizeof(double))));
 constexpr std::size_t kLanes = 4;
-
-[[gnu::always_inline]] inline Four loadFour(const double* values) {
-  Four four;
-  std::memcpy(&four, values, sizeof four);
-  return four;
-}
-
-[[gnu::always_inline]] inline void storeFour(double* values, Four four) {
-  std::memcpy(values, &four, sizeof four);
-}
 
 // The slerp weights of a task whose arc was not worked out beforehand, or is too long for the
 // short series.
@@ -44,23 +31,22 @@ void weightsOfAnyArc(const InterpolationTask& task, double& weight_a, double& we
   if (far) weight_b = -weight_b;
 }
 
+// The task's interpolated value, composed under its anchor when it has one, written to its
+// room. The value stays in registers in between: read back from the room, a translation just
+// written in parts would wait for the stores to land.
 [[gnu::always_inline]] inline void blend(const InterpolationTask& task, double weight_a,
                                          double weight_b) {
-  const Transform& older = *task.older;
-  const Transform& newer = *task.newer;
-  Transform& out = *task.out;
-  if (task.ratio == 0.0) {
-    out = older;
-    return;
-  }
+  WideTransform value = widened(*task.older);
   if (task.ratio == 1.0) {
-    out = newer;
-    return;
+    value = widened(*task.newer);
+  } else if (task.ratio != 0.0) {
+    const WideTransform newer = widened(*task.newer);
+    value.translation += task.ratio * (newer.translation - value.translation);
+    // Stored rotations are unit to rounding and the weights exact, so the sum is unit too.
+    value.rotation = weight_a * value.rotation + weight_b * newer.rotation;
   }
-  out.translation = older.translation + task.ratio * (newer.translation - older.translation);
-  // Stored rotations are unit to rounding and the weights exact, so the sum is unit too.
-  storeFour(out.rotation.coeffs().data(), weight_a * loadFour(older.rotation.coeffs().data()) +
-                                              weight_b * loadFour(newer.rotation.coeffs().data()));
+  if (task.anchor) value = composedWide(widened(*task.anchor), value);
+  narrowInto(value, *task.out);
 }
 
 // Up to four tasks at once (`live` of them, the lanes after them idle): the weights of all four
@@ -101,10 +87,6 @@ LCMTF_WIDE_VECTORS void interpolateBatch(const InterpolationTask* tasks, std::si
   std::size_t first = 0;
   for (; first + kLanes <= count; first += kLanes) interpolateFour(tasks + first, kLanes);
   if (first < count) interpolateFour(tasks + first, count - first);
-  for (std::size_t i = 0; i < count; ++i) {
-    const InterpolationTask& task = tasks[i];
-    if (task.anchor) *task.out = composed(*task.anchor, *task.out);
-  }
 }
 
 }  // namespace lcmtf::detail
