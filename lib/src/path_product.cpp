@@ -13,7 +13,9 @@ namespace {
 
 // top_T_bottom of `count` step values, bottom step first, composed from the top down:
 // product = product * step. Each step then only waits on the rotation composed so far, while
-// the translations rotate into place alongside and add up at the end of the chain.
+// the translations rotate into place alongside and add up at the end of the chain. (Two halves
+// composed side by side, then joined, made deepest lookups 5-7 % faster and wide's 3-5 %
+// slower.)
 [[gnu::always_inline]] inline WideTransform chainProduct(const Transform* const* values,
                                                          std::size_t count) {
   if (count == 0) return widened(Transform::identity());
@@ -24,6 +26,19 @@ namespace {
     product.rotation = quaternionProduct(product.rotation, step.rotation);
   }
   return product;
+}
+
+// target_T_ancestor * ancestor_T_source, without forming the inverse. Apart from
+// pathProduct(): clang refuses four-lane arguments in calls made by a function it also compiles
+// for processors without AVX, but not in the functions inlined into it.
+[[gnu::always_inline]] inline void joinInto(const WideTransform& ancestor_T_source,
+                                            const WideTransform& ancestor_T_target,
+                                            Transform& target_T_source) {
+  const Four target_R_ancestor = conjugate(ancestor_T_target.rotation);
+  narrowInto(WideTransform{rotatedWide(target_R_ancestor, ancestor_T_source.translation -
+                                                              ancestor_T_target.translation),
+                           quaternionProduct(target_R_ancestor, ancestor_T_source.rotation)},
+             target_T_source);
 }
 
 }  // namespace
@@ -38,14 +53,8 @@ LCMTF_WIDE_VECTORS void pathProduct(const Transform* const* up_from_source,
     narrowInto(chainProduct(up_from_source, source_count), target_T_source);
     return;
   }
-  const WideTransform ancestor_T_source = chainProduct(up_from_source, source_count);
-  const WideTransform ancestor_T_target = chainProduct(up_from_target, target_count);
-  // target_T_ancestor * ancestor_T_source, without forming the inverse.
-  const Four target_R_ancestor = conjugate(ancestor_T_target.rotation);
-  narrowInto(WideTransform{rotatedWide(target_R_ancestor, ancestor_T_source.translation -
-                                                              ancestor_T_target.translation),
-                           quaternionProduct(target_R_ancestor, ancestor_T_source.rotation)},
-             target_T_source);
+  joinInto(chainProduct(up_from_source, source_count), chainProduct(up_from_target, target_count),
+           target_T_source);
 }
 
 }  // namespace lcmtf::detail
