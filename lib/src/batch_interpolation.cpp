@@ -5,8 +5,6 @@
 #include "batch_interpolation.hpp"
 
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 
 #include "slerp_weights.hpp"
 #include "wide_transform.hpp"

@@ -16,10 +16,4 @@ inline Transform composed(const Transform& above, const Transform& below) {
                    above.rotation * below.rotation);
 }
 
-/// above * below, in place of above.
-inline void composeUnder(Transform& above, const Transform& below) {
-  above.translation += rotated(above.rotation, below.translation);
-  above.rotation = above.rotation * below.rotation;
-}
-
 }  // namespace lcmtf::detail

@@ -20,11 +20,7 @@ namespace {
                                                          std::size_t count) {
   if (count == 0) return widened(Transform::identity());
   WideTransform product = widened(*values[count - 1]);
-  for (std::size_t i = count - 1; i-- > 0;) {
-    const WideTransform step = widened(*values[i]);
-    product.translation += rotatedWide(product.rotation, step.translation);
-    product.rotation = quaternionProduct(product.rotation, step.rotation);
-  }
+  for (std::size_t i = count - 1; i-- > 0;) product = composedWide(product, widened(*values[i]));
   return product;
 }
 
