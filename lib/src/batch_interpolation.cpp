@@ -44,7 +44,7 @@ void weightsOfAnyArc(const InterpolationTask& task, double& weight_a, double& we
     value.rotation = weight_a * value.rotation + weight_b * newer.rotation;
   }
   if (task.anchor) value = composedWide(widened(*task.anchor), value);
-  narrowInto(value, *task.out);
+  storeWide(value, *task.out);
 }
 
 // Up to four tasks at once (`live` of them, the lanes after them idle): the weights of all four

@@ -51,13 +51,22 @@ struct WideTransform {
   return WideTransform{translation, loadFour(transform.rotation.coeffs().data())};
 }
 
-/// Writes `wide` to `out`, leaving the bytes after its translation alone. (Writing them too, so
-/// that a later load of the whole vector could be forwarded from one store, made lookups 1-6 %
-/// slower in buffer_core_bench.)
+/// Writes `wide` to `out`, leaving the bytes after its translation alone: for a lookup's
+/// answer, which its caller reads field by field. (Writing them too made lookups 1-6 % slower
+/// in buffer_core_bench.)
 [[gnu::always_inline]] inline void narrowInto(const WideTransform& wide, Transform& out) {
   double translation[4];
   storeFour(translation, wide.translation);
   out.translation = Eigen::Vector3d(translation[0], translation[1], translation[2]);
+  storeFour(out.rotation.coeffs().data(), wide.rotation);
+}
+
+/// Writes `wide` to `out` whole, the translation's fourth lane into the bytes after it: for a
+/// value read back as whole vectors, which the processor then forwards from the two stores
+/// rather than waiting for them to reach the cache. For the interpolated values of a lookup's
+/// path, 1-4 % off the lookups of buffer_core_bench on pr2 and wide.
+[[gnu::always_inline]] inline void storeWide(const WideTransform& wide, Transform& out) {
+  storeFour(reinterpret_cast<double*>(&out), wide.translation);
   storeFour(out.rotation.coeffs().data(), wide.rotation);
 }
 
