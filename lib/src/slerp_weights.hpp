@@ -73,7 +73,7 @@ inline double shortArcSquared(double y) { return 4.0 * y * horner<5>(kAsinSquare
 /// One weight, w * sin(w * arc) / (w * arc), by the short series; `inverse_sinc` is
 /// arc / sin(arc). The series by pairs of terms (Estrin's scheme), three operations deep where
 /// Horner's rule takes four, and w * inverse_sinc formed alongside: the weights wait on the
-/// time's ratio, and every interpolated value on them (1-3 % off the lookups of
+/// time's ratio, and every interpolated value on them (up to 3 % off the lookups of
 /// buffer_core_bench on pr2 and wide).
 template <class Value>
 [[gnu::always_inline]] inline Value shortSeriesWeight(Value w, Value arc_squared,

@@ -64,7 +64,7 @@ struct WideTransform {
 /// Writes `wide` to `out` whole, the translation's fourth lane into the bytes after it: for a
 /// value read back as whole vectors, which the processor then forwards from the two stores
 /// rather than waiting for them to reach the cache. For the interpolated values of a lookup's
-/// path, 1-4 % off the lookups of buffer_core_bench on pr2 and wide.
+/// path, 1-3 % off the lookups of buffer_core_bench on pr2 and wide.
 [[gnu::always_inline]] inline void storeWide(const WideTransform& wide, Transform& out) {
   storeFour(reinterpret_cast<double*>(&out), wide.translation);
   storeFour(out.rotation.coeffs().data(), wide.rotation);
