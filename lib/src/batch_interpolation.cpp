@@ -30,8 +30,8 @@ void weightsOfAnyArc(const InterpolationTask& task, double& weight_a, double& we
 }
 
 // The task's interpolated value, composed under its anchor when it has one, written to its
-// room. The value stays in registers in between: read back from the room, a translation just
-// written in parts would wait for the stores to land.
+// room once. The value stays in registers in between, not written and read back for the
+// anchor.
 [[gnu::always_inline]] inline void blend(const InterpolationTask& task, double weight_a,
                                          double weight_b) {
   WideTransform value = widened(*task.older);
