@@ -644,6 +644,33 @@ TEST(BufferCoreLookup, FrameHandleLookupsEqualStringLookups) {
   }
 }
 
+TEST(BufferCoreLookup, AResultReusedAcrossLookupsTakesEachLookupsNames) {
+  BufferCore buffer;
+  const std::string long_parent = "a_parent_frame_with_a_name_longer_than_most";
+  const std::string long_child = "a_child_frame_with_a_name_longer_than_most";
+  put(buffer, "w", long_parent, at(1), pose({1, 0, 0}, 0.1, kZ));
+  put(buffer, long_parent, long_child, at(1), pose({0, 2, 0}, 0.2, kX));
+  put(buffer, "w", "ab", at(1), pose({0, 0, 3}, 0.3, kY));
+  const FrameHandle w = buffer.findFrame("w");
+  const FrameHandle parent = buffer.findFrame(long_parent);
+  const FrameHandle child = buffer.findFrame(long_child);
+  const FrameHandle ab = buffer.findFrame("ab");
+  TransformStamped reused;
+  const std::vector<std::pair<FrameHandle, FrameHandle>> pairs{
+      {parent, child}, {parent, child}, {w, ab},      {parent, child}, {ab, child},
+      {w, ab},         {child, child},  {ab, parent}, {child, w},      {w, ab}};
+  for (const auto& [target, source] : pairs) {
+    buffer.lookupTransform(target, source, at(1), reused);
+    const TransformStamped returned = buffer.lookupTransform(target, source, at(1));
+    EXPECT_EQ(reused.parent_frame, returned.parent_frame);
+    EXPECT_EQ(reused.child_frame, returned.child_frame);
+    EXPECT_EQ(reused.stamp, returned.stamp);
+    EXPECT_TRUE(identical(reused.transform, returned.transform)) << returned.child_frame;
+  }
+  EXPECT_EQ(reused.parent_frame, "w");
+  EXPECT_EQ(reused.child_frame, "ab");
+}
+
 TEST(BufferCoreLookup, FindFrameIsNullForUnknownFramesAndResolveFrameCreatesThem) {
   BufferCore buffer;
   EXPECT_FALSE(buffer.findFrame("ghost"));

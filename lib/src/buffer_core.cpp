@@ -415,14 +415,6 @@ void BufferCore::Impl::walkHandles(FrameHandle target, FrameHandle source, std::
   }
 }
 
-void BufferCore::Impl::lookupHandles(FrameHandle target, FrameHandle source, std::int64_t& stamp,
-                                     Transform& value) const {
-  checkHandles(target, source);
-  // The usual case first, with no failure record to fill in.
-  if (target.id != source.id && quickLookup(target.id, source.id, stamp, &value)) return;
-  walkHandles(target, source, stamp, value);
-}
-
 TransformStamped BufferCore::lookupTransform(FrameHandle target, FrameHandle source,
                                              TimePoint time) const {
   SharedLock lock(impl_->lock_);
@@ -438,14 +430,35 @@ TransformStamped BufferCore::lookupTransform(FrameHandle target, FrameHandle sou
   return impl_->stamped(target.id, source.id, stamp, value);
 }
 
+namespace {
+
+// Copies `name` into `out` unless it holds it already, as it does when a caller looks up the
+// same pair into the same result again.
+void assignName(std::string& out, std::string_view name) {
+  if (!detail::sameName(out, name)) out.assign(name.data(), name.size());
+}
+
+}  // namespace
+
+// As the lookup that returns its result, its value written in place and its names kept when
+// they are the same.
 void BufferCore::lookupTransform(FrameHandle target, FrameHandle source, TimePoint time,
                                  TransformStamped& result) const {
   SharedLock lock(impl_->lock_);
   std::int64_t stamp = toUtime(time);
-  impl_->lookupHandles(target, source, stamp, result.transform);
+  impl_->checkHandles(target, source);
+  detail::QuickPath path;
+  if (target.id != source.id && impl_->planQuickLookup(target.id, source.id, stamp, true, path)) {
+    assignName(result.parent_frame, impl_->nameOf(target.id));
+    assignName(result.child_frame, impl_->nameOf(source.id));
+    result.transform = impl_->quickValue(target.id, source.id, stamp, path);
+    result.stamp = fromUtime(path.plan.at);
+    return;
+  }
+  impl_->walkHandles(target, source, stamp, result.transform);
   result.stamp = fromUtime(stamp);
-  result.parent_frame.assign(impl_->nameOf(target.id));
-  result.child_frame.assign(impl_->nameOf(source.id));
+  assignName(result.parent_frame, impl_->nameOf(target.id));
+  assignName(result.child_frame, impl_->nameOf(source.id));
 }
 
 TransformStamped BufferCore::lookupTransform(const std::string& target, TimePoint target_time,

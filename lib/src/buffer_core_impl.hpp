@@ -128,12 +128,10 @@ class BufferCore::Impl {
   /// whose rounding errors it carries.
   void crossCheck(FrameId target, FrameId source, std::int64_t requested, std::int64_t answered,
                   const Transform* quick, double magnitude) const;
-  /// lookup() between two handles; throws when either is foreign or the lookup fails.
-  void lookupHandles(FrameHandle target, FrameHandle source, std::int64_t& stamp,
-                     Transform& value) const;
   /// Throws unless both handles are of this buffer's frames.
   void checkHandles(FrameHandle target, FrameHandle source) const;
-  /// lookupHandles() by the walk alone, for callers that have tried the root paths.
+  /// The lookup between two handles by the walk alone, for callers that have tried the root
+  /// paths; throws when it fails.
   void walkHandles(FrameHandle target, FrameHandle source, std::int64_t& stamp,
                    Transform& value) const;
   /// The stamped result of a lookup that succeeded.
