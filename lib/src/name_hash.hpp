@@ -55,8 +55,9 @@ class NameHash {
     std::uint64_t second;
     std::uint64_t second_last;
   };
+  // `last` multiplies every name of up to 8 bytes: odd, so that it is never 0.
   static Seeds seedsFrom(std::uint64_t seed) {
-    const std::uint64_t other = mixed(seed ^ kMultiplier);
+    const std::uint64_t other = mixed(seed ^ kMultiplier) | 1;
     return Seeds{seed, other, mixed(seed), mixed(other)};
   }
   static std::uint64_t randomSeed() {
