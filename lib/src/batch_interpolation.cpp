@@ -65,9 +65,9 @@ template <std::size_t Lane>
   }
 }
 
-// Up to four tasks at once (`live` of them, the lanes after them idle): the weights of all four
-// from the short series side by side, a negative weight for each newer rotation on the far
-// side of the sphere from its older one.
+// Up to four tasks at once (`live` of them, at least one, the lanes after them idle): the weights
+// of all four from the short series side by side, a negative weight for each newer rotation on the
+// far side of the sphere from its older one.
 [[gnu::always_inline]] inline void interpolateFour(const InterpolationTask* tasks,
                                                    std::size_t live) {
   Four ratio = {0.5, 0.5, 0.5, 0.5};
