@@ -448,5 +448,95 @@ TEST(TimeCache, RingNeverHasRoomForMoreSamplesThanTheEdgeMayKeep) {
   EXPECT_EQ(cache.size(), kMostSamples);
 }
 
+// spanWithin() from prefetch()'s hint at every stamp strictly between two samples: the two
+// samples, and a ratio within a few ulps of the quotient.
+void expectRatiosAreQuotients(const TimeCache& cache, const std::vector<std::int64_t>& stamps) {
+  for (std::size_t i = 0; i + 1 < stamps.size(); ++i) {
+    for (std::int64_t stamp = stamps[i] + 1; stamp < stamps[i + 1]; ++stamp) {
+      const SampleSpan span = cache.spanWithin(stamp, cache.prefetch(stamp));
+      EXPECT_TRUE(holds(span.older, valueAt(stamps[i]))) << "at " << stamp;
+      EXPECT_TRUE(holds(span.newer, valueAt(stamps[i + 1]))) << "at " << stamp;
+      EXPECT_DOUBLE_EQ(span.ratio, static_cast<double>(stamp - stamps[i]) /
+                                       static_cast<double>(stamps[i + 1] - stamps[i]))
+          << "at " << stamp;
+    }
+  }
+}
+
+// An edge is steady while every sample it keeps is one interval after the one before: a
+// late sample between two others ends that until it leaves the window, an append out of step
+// until the samples before it have. Spans agree with find() throughout.
+TEST(TimeCache, SteadinessFollowsTheSpacingOfTheSamplesKept) {
+  constexpr std::int64_t kWindow = 400;
+  TimeCache cache;
+  std::vector<std::int64_t> stamps;
+  const auto add = [&](std::int64_t stamp) {
+    ASSERT_NE(cache.insert(sampleAt(stamp), kWindow), InsertOutcome::kTooOld);
+    stamps.insert(std::upper_bound(stamps.begin(), stamps.end(), stamp), stamp);
+    stamps.erase(stamps.begin(),
+                 std::lower_bound(stamps.begin(), stamps.end(), stamps.back() - kWindow));
+  };
+  const auto check = [&] {
+    expectSpanWithinAgreesWithFind(cache, stamps);
+    expectRatiosAreQuotients(cache, stamps);
+  };
+  EXPECT_FALSE(cache.isSteady());
+  for (std::int64_t k = 0; k < 30; ++k) add(1000 + 10 * k);
+  EXPECT_TRUE(cache.isSteady());
+  check();
+  add(1103);
+  EXPECT_FALSE(cache.isSteady());
+  check();
+  std::int64_t newest = stamps.back();
+  for (int k = 0; k < 20; ++k) add(newest += 10);
+  EXPECT_FALSE(cache.isSteady()) << "the late sample is still kept";
+  check();
+  for (int k = 0; k < 30; ++k) add(newest += 10);
+  EXPECT_TRUE(cache.isSteady());
+  check();
+  add(newest += 13);
+  EXPECT_FALSE(cache.isSteady());
+  check();
+  for (int k = 0; k < 40; ++k) add(newest += 13);
+  EXPECT_TRUE(cache.isSteady());
+  check();
+  add(newest);  // the newest again: the stamps stay as they were
+  EXPECT_TRUE(cache.isSteady());
+}
+
+TEST(TimeCache, EdgeWithIntervalsTooLongToKeepIsNeverSteady) {
+  constexpr std::int64_t kLong = std::int64_t{1} << 33;
+  TimeCache cache;
+  std::vector<std::int64_t> stamps;
+  for (std::int64_t k = 0; k < 5; ++k) {
+    cache.insert(sampleAt(k * kLong), kKeepAll);
+    stamps.push_back(k * kLong);
+    EXPECT_FALSE(cache.isSteady()) << "after " << k + 1 << " samples";
+  }
+  for (std::size_t i = 0; i + 1 < stamps.size(); ++i) {
+    const std::int64_t stamp = stamps[i] + kLong / 3;
+    EXPECT_TRUE(sameSpan(cache.spanWithin(stamp, cache.prefetch(stamp)), [&] {
+      SampleSpan span;
+      cache.find(stamp, span);
+      return span;
+    }()));
+  }
+}
+
+TEST(TimeCache, ClearingOrMakingStaticForgetsTheInterval) {
+  TimeCache cache;
+  for (std::int64_t k = 0; k < 10; ++k) cache.insert(sampleAt(100 * k), kKeepAll);
+  ASSERT_TRUE(cache.isSteady());
+  cache.clearHistory();
+  EXPECT_FALSE(cache.isSteady());
+  cache.insert(sampleAt(5000), kKeepAll);
+  cache.insert(sampleAt(5007), kKeepAll);
+  EXPECT_TRUE(cache.isSteady());
+  cache.setStatic(kParent, valueAt(0));
+  EXPECT_FALSE(cache.isSteady());
+  cache.insert(sampleAt(9000), kKeepAll);
+  EXPECT_FALSE(cache.isSteady()) << "one sample has no interval";
+}
+
 }  // namespace
 }  // namespace lcmtf::detail

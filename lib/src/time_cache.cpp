@@ -13,6 +13,7 @@ void TimeCache::setStatic(FrameId parent, const Transform& transform) {
   count_ = 1;
   is_static_ = true;
   parent_changed_at_ = std::numeric_limits<std::int64_t>::min();
+  forgetInterval();
   refreshEnds();
 }
 
@@ -22,7 +23,17 @@ void TimeCache::clearHistory() {
   count_ = 0;
   parents_.clear();
   parent_changed_at_ = std::numeric_limits<std::int64_t>::min();
+  forgetInterval();
   refreshEnds();
+}
+
+[[gnu::always_inline]] inline void TimeCache::noteNewestInterval(std::int64_t previous_newest) {
+  const std::int64_t interval = saturatingSubtract(newest_stamp_, previous_newest);
+  if (interval == steady_interval_) return;
+  steady_interval_ = interval <= std::numeric_limits<std::uint32_t>::max()
+                         ? static_cast<std::uint32_t>(interval)
+                         : 0;
+  steady_from_ = previous_newest;
 }
 
 // This and the two helpers below are inlined into insert(): their calls took 4 % of an insert
@@ -161,10 +172,12 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
     ++count_;
     refreshArcsAround(insert_at);
     noteParentChanges(insert_at);
+    forgetInterval();
     refreshEnds();
     return dropped ? InsertOutcome::kAddedDroppingOldest : InsertOutcome::kAdded;
   }
   const bool dropped = count_ >= most_samples;
+  const std::int64_t previous_newest = count_ > 0 ? newest_stamp_ : sample.stamp;
   if (dropped) dropOldest();
   if (count_ == samples_.size()) grow(cache_time, most_samples);
   makeRoomForParent(sample.parent, false);
@@ -175,6 +188,7 @@ InsertOutcome TimeCache::insert(const EdgeSample& sample, std::int64_t cache_tim
   const std::int64_t horizon = saturatingSubtract(sample.stamp, cache_time);
   while (stampAt(0) < horizon) dropOldest();
   refreshEnds();
+  noteNewestInterval(previous_newest);
   return dropped ? InsertOutcome::kAddedDroppingOldest : InsertOutcome::kAdded;
 }
 

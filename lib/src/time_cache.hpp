@@ -72,6 +72,9 @@ class TimeCache {
   InsertOutcome insert(const EdgeSample& sample, std::int64_t cache_time,
                        std::size_t most_samples = kUnbounded);
   static constexpr std::size_t kUnbounded = static_cast<std::size_t>(-1);
+  /// Whether every sample kept is the same whole number of microseconds (below 2^32) after the
+  /// one before, as a steady publisher's are.
+  bool isSteady() const { return steady_from_ <= oldest_stamp_ && steady_interval_ != 0; }
   /// Whether every sample kept has the same parent.
   bool hasSingleParent() const { return parent_changed_at_ <= oldest_stamp_; }
   /// Whether the edge is dynamic and its samples have more than one parent.
@@ -184,10 +187,17 @@ class TimeCache {
   SampleSpan spanBetween(std::size_t at, std::size_t next, std::int64_t stamp,
                          FrameId parent) const {
     const std::int64_t older_stamp = samples_.stamp(at);
+    const std::int64_t offset = stamp - older_stamp;
     return SampleSpan{&samples_.transform(at), &samples_.transform(next),
-                      static_cast<double>(stamp - older_stamp) /
-                          static_cast<double>(samples_.stamp(next) - older_stamp),
+                      isSteady() ? steadyRatio(offset)
+                                 : static_cast<double>(offset) /
+                                       static_cast<double>(samples_.stamp(next) - older_stamp),
                       parent, samples_.arc(at)};
+  }
+  /// The ratio `offset` microseconds past a sample of a steady edge, which a multiplication by
+  /// the inverse of the interval gives to within an ulp of the quotient.
+  double steadyRatio(std::int64_t offset) const {
+    return static_cast<double>(offset) * samples_per_utime_;
   }
   std::size_t indexAtOrBefore(std::int64_t stamp) const;
   std::size_t searchNear(std::int64_t stamp, std::size_t guess) const;
@@ -199,6 +209,13 @@ class TimeCache {
   }
   void noteParentChanges(std::size_t index);
   void refreshEnds();
+  /// Notes the interval from the newest sample before, `previous_newest`, to one added after it.
+  void noteNewestInterval(std::int64_t previous_newest);
+  /// Forgets the edge's interval, after a sample came anywhere but after the newest.
+  void forgetInterval() {
+    steady_interval_ = 0;
+    steady_from_ = std::numeric_limits<std::int64_t>::max();
+  }
 
   // What lookups and inserts of a dynamic edge read come first, together, so that they touch
   // two cache lines of the edge; the static value, which they do not read, comes last.
@@ -213,9 +230,13 @@ class TimeCache {
   std::int64_t newest_stamp_ = 0;
   double samples_per_utime_ = 0.0;  // (count - 1) / (newest - oldest), for guessIndex()
   std::int64_t single_parent_from_ = std::numeric_limits<std::int64_t>::max();
+  // Each sample from the one at steady_from_ on is steady_interval_ microseconds after the one
+  // before (0: no such interval known, or one too long to keep).
+  std::int64_t steady_from_ = std::numeric_limits<std::int64_t>::max();
   FrameId oldest_parent_ = kNoFrame;
   FrameId newest_parent_ = kNoFrame;
   FrameId only_parent_ = kNoFrame;
+  std::uint32_t steady_interval_ = 0;
   FrameId static_parent_ = kNoFrame;
   bool is_static_ = false;
   // The newest stamp at which the parent differs from the sample before; samples up to the
@@ -262,6 +283,15 @@ inline SampleSpan TimeCache::spanWithin(std::int64_t stamp, std::size_t hint) co
     // lookups on pr2 and deep_chain in buffer_core_bench.
     const std::size_t at = slot(hint);
     const std::size_t next = at + 1 == samples_.size() ? 0 : at + 1;
+    // A steady edge's stamps are known before its samples load: the ratio need not wait for
+    // them. In buffer_core_bench, wide's random, deepest and time-travel lookups 5-6 % faster,
+    // pr2's random and latest-time ones 2 %; the deepest of pr2 and deep_chain 2 % slower.
+    const std::int64_t steady_offset =
+        stamp - oldest_stamp_ - static_cast<std::int64_t>(hint) * steady_interval_;
+    if (steady_from_ <= oldest_stamp_ && steady_offset > 0 && steady_offset < steady_interval_) {
+      return SampleSpan{&samples_.transform(at), &samples_.transform(next),
+                        steadyRatio(steady_offset), newest_parent_, samples_.arc(at)};
+    }
     const std::int64_t older_stamp = samples_.stamp(at);
     const std::int64_t newer_stamp = samples_.stamp(next);
     if (older_stamp <= stamp && stamp <= newer_stamp) {
