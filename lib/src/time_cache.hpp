@@ -228,7 +228,8 @@ class TimeCache {
   // Copies of what lookups read most, so walking the tree touches no sample.
   std::int64_t oldest_stamp_ = 0;
   std::int64_t newest_stamp_ = 0;
-  double samples_per_utime_ = 0.0;  // (count - 1) / (newest - oldest), for guessIndex()
+  // (count - 1) / (newest - oldest), for guessIndex(); a steady edge's ratios multiply by it.
+  double samples_per_utime_ = 0.0;
   std::int64_t single_parent_from_ = std::numeric_limits<std::int64_t>::max();
   // Each sample from the one at steady_from_ on is steady_interval_ microseconds after the one
   // before (0: no such interval known, or one too long to keep).
