@@ -2,10 +2,10 @@
 # Installs the Debian packages lcmtf builds and tests with, only those that are missing.
 # With --tests it also installs what only the tests use: ROS tf2 (libtf2-dev, with the
 # geometry_msgs and tf2_geometry_msgs headers and KDL's), which the agreement tests check lcmtf
-# against, its Python binding for the Python benchmark's comparison, pytest, and Xvfb with a
-# Java that draws windows, under which the lcm-spy tables are drawn, and Chromium with a
-# WebSocket client for Python, which drive the viewer's page. Nothing lcmtf builds for
-# users links them.
+# against, its Python binding for the Python benchmark's comparison, pytest, Valgrind, and Xvfb
+# with a Java that draws windows, under which the lcm-spy tables are drawn, and Chromium with a
+# WebSocket client for Python, which drive the viewer's page. Nothing lcmtf builds for users
+# links them.
 set -euo pipefail
 
 packages=(
@@ -20,7 +20,7 @@ packages=(
 )
 if [ "${1:-}" = "--tests" ]; then
   packages+=(libtf2-dev libgeometry-msgs-dev libtf2-geometry-msgs-dev liborocos-kdl-dev
-    python3-pytest python3-tf2 xvfb xauth default-jre chromium python3-websocket)
+    python3-pytest python3-tf2 valgrind xvfb xauth default-jre chromium python3-websocket)
 fi
 
 missing=()

@@ -1,17 +1,18 @@
 #!/usr/bin/env bash
 # Builds lcmtf and runs the tests: every test in a normal build (the tf2 agreement tests
 # included: ROS tf2 is installed for them; the Python package's tests run here only, as the
-# sanitizer builds leave the package out), the concurrency tests and the listener's reporter
-# tests under ThreadSanitizer, short libFuzzer runs over decode-and-insert, robot descriptions,
-# static transform files and the viewer's page messages beside every unit test again in an
-# ASan+UBSan build, where each quick lookup is also checked against the walk.
+# sanitizer builds leave the package out), the lookup and insert tests again under Valgrind's
+# memcheck, the concurrency tests and the listener's reporter tests under ThreadSanitizer, short
+# libFuzzer runs over decode-and-insert, robot descriptions, static transform files and the
+# viewer's page messages beside every unit test again in an ASan+UBSan build, where each quick
+# lookup is also checked against the walk.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh --tests
 
 jobs=${LCMTF_JOBS:-2}
 cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release -DLCMTF_REQUIRE_TF2_AGREEMENT=ON \
-  -DLCMTF_REQUIRE_PYTHON=ON
+  -DLCMTF_REQUIRE_PYTHON=ON -DLCMTF_REQUIRE_MEMCHECK=ON
 cmake --build build/release -j"$jobs"
 ctest --test-dir build/release -j"$jobs" --output-on-failure
 

@@ -3,10 +3,19 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 #include <random>
 #include <vector>
 
 namespace lcmtf {
+
+// How GoogleTest shows a sample: by its values, where its own printer would show the object's
+// bytes, padding included, which memcheck reports as read before written.
+void PrintTo(const Transform& value, std::ostream* out) {
+  *out << "translation [" << value.translation.transpose() << "] rotation xyzw ["
+       << value.rotation.coeffs().transpose() << "]";
+}
+
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;

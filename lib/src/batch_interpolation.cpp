@@ -70,9 +70,12 @@ template <std::size_t Lane>
 // far side of the sphere from its older one.
 [[gnu::always_inline]] inline void interpolateFour(const InterpolationTask* tasks,
                                                    std::size_t live) {
-  Four ratio = {0.5, 0.5, 0.5, 0.5};
-  Four known = {0.0, 0.0, 0.0, 0.0};
-  for (std::size_t lane = 0; lane < kLanes; ++lane) {
+  // Idle lanes repeat the first task. Inserted into zeros instead, the first lane took an
+  // instruction (a register form of VEX vmovq) that Valgrind 3.19 cannot run.
+  Four ratio = {tasks[0].ratio, tasks[0].ratio, tasks[0].ratio, tasks[0].ratio};
+  Four known = {tasks[0].arc_squared, tasks[0].arc_squared, tasks[0].arc_squared,
+                tasks[0].arc_squared};
+  for (std::size_t lane = 1; lane < kLanes; ++lane) {
     if (lane < live) {
       ratio[lane] = tasks[lane].ratio;
       known[lane] = tasks[lane].arc_squared;
