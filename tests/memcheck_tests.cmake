@@ -1,7 +1,7 @@
 # The unit tests of lookups, inserts and their arithmetic run again under Valgrind's memcheck, as
 # users run their programs: it must know every instruction the library's clones use (the one
-# built for AVX2 included, where the processor has it), and find no read of memory the library
-# did not write.
+# built for AVX2 included, where the processor has it), and find no read outside the memory the
+# program owns and no decision taken on bytes never written.
 option(LCMTF_REQUIRE_MEMCHECK "Fail to configure unless the memcheck tests are built" OFF)
 find_program(LCMTF_VALGRIND valgrind)
 if(LCMTF_REQUIRE_MEMCHECK AND (NOT LCMTF_VALGRIND OR LCMTF_SANITIZE))
