@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <string>
 #include <utility>
@@ -419,6 +421,57 @@ TEST(BufferCoreLookup, LatestTimeIsTheOldestNewestStampOfTheDynamicEdgesOnThePat
   EXPECT_EQ(buffer.getLatestCommonTime("world", "tool"), at(5));
   EXPECT_EQ(buffer.getLatestCommonTime("tool", "other"), at(3));
   EXPECT_EQ(buffer.getLatestCommonTime("other", "world"), at(3));
+}
+
+TEST(BufferCoreLookup, LatestTimeLookupIsTheLookupAtTheLatestCommonTime) {
+  // map -> odom (100 Hz) =static=> base -> arm (30 Hz) =static=> tool, and map =static=> mount ->
+  // camera (about 50 Hz, stamps uneven): each new sample moves the latest common time, which
+  // falls on a newest sample, between the two newest, or further back.
+  BufferCore buffer(std::chrono::seconds(10));
+  putStatic(buffer, "odom", "base", pose({0.1, 0, 0.3}, 0.2, kZ));
+  putStatic(buffer, "arm", "tool", pose({0, 0, 0.2}, kPi / 2, kY));
+  putStatic(buffer, "map", "mount", pose({2, 1, 1.5}, -0.4, {1, 0, 1}));
+  const std::vector<std::string> frames = {"map", "odom", "base", "arm", "tool", "mount", "camera"};
+  std::mt19937_64 random(5);
+  std::uniform_int_distribution<std::int64_t> jitter(-3000, 3000);
+  std::int64_t odom_next = 3'000;
+  std::int64_t arm_next = 7'000;
+  std::int64_t camera_next = 11'000;
+  const auto stampOf = [](std::int64_t micros) {
+    return lcmtf_test::kEpoch + std::chrono::microseconds(micros);
+  };
+  const auto seconds = [](std::int64_t micros) { return 1e-6 * static_cast<double>(micros); };
+  std::size_t checked = 0;
+  for (std::int64_t now = 0; now < 400'000; now += 1'000) {
+    if (now >= odom_next) {
+      put(buffer, "map", "odom", stampOf(odom_next),
+          pose({seconds(odom_next), 0.5, 0}, 0.7 * seconds(odom_next), kZ));
+      odom_next += 10'000;
+    }
+    if (now >= arm_next) {
+      put(buffer, "base", "arm", stampOf(arm_next),
+          pose({0, 0.2, 0.9}, -2.1 * seconds(arm_next), {1, 1, 0}));
+      arm_next += 33'333;
+    }
+    if (now >= camera_next) {
+      put(buffer, "mount", "camera", stampOf(camera_next),
+          pose({0, 0, 0.05}, 1.3 * seconds(camera_next), {0, 1, 2}));
+      camera_next += 20'000 + jitter(random);
+    }
+    for (const std::string& target : frames) {
+      for (const std::string& source : frames) {
+        if (target == source || !buffer.canTransform(target, source, kLatestTime)) continue;
+        const TransformStamped latest = buffer.lookupTransform(target, source, kLatestTime);
+        ASSERT_EQ(latest.stamp, buffer.getLatestCommonTime(target, source))
+            << source << " in " << target;
+        ASSERT_TRUE(identical(latest.transform,
+                              buffer.lookupTransform(target, source, latest.stamp).transform))
+            << source << " in " << target << " at " << toUtime(latest.stamp);
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 10'000u);
 }
 
 TEST(BufferCoreLookup, LatestTimeOverOnlyStaticEdgesHasStampZero) {

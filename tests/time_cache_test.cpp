@@ -335,12 +335,54 @@ TEST(TimeCache, SampleAfterAStaticValueMakesTheEdgeDynamic) {
   EXPECT_EQ(cache.find(499, span), SampleStatus::kPast);
 }
 
+// Asks for the two newest samples and the ratio between them at every stamp from a few before
+// the older to a few after the newer, and expects what find() gives there: the same samples
+// and ratio, 0 at the older's stamp and 1 at the newer's, and no ratio outside them.
+void expectNewestPairAgreesWithFind(const TimeCache& cache) {
+  const Transform* older = nullptr;
+  const Transform* newer = nullptr;
+  double arc = 0.0;
+  if (cache.size() < 2) {
+    EXPECT_FALSE(cache.newestPair(older, newer, arc));
+    return;
+  }
+  ASSERT_TRUE(cache.newestPair(older, newer, arc));
+  SampleSpan at_newest;
+  ASSERT_EQ(cache.find(cache.newestStamp(), at_newest), SampleStatus::kOk);
+  EXPECT_EQ(newer, at_newest.older);
+  const std::int64_t newest = cache.newestStamp();
+  // The older sample's stamp: the newest before the newer's where find() gives it alone.
+  std::int64_t older_stamp = newest - 1;
+  SampleSpan span;
+  for (; cache.find(older_stamp, span) == SampleStatus::kOk; --older_stamp) {
+    if (span.older == older && span.newer == nullptr) break;
+  }
+  ASSERT_TRUE(span.older == older && span.newer == nullptr) << "no older sample found";
+  for (std::int64_t stamp = older_stamp - 3; stamp <= newest + 3; ++stamp) {
+    double ratio = -1.0;
+    const bool between = older_stamp <= stamp && stamp <= newest;
+    ASSERT_EQ(cache.ratioInNewestPair(stamp, ratio), between) << "at " << stamp;
+    if (!between) continue;
+    ASSERT_EQ(cache.find(stamp, span), SampleStatus::kOk) << "at " << stamp;
+    if (stamp == older_stamp) {
+      EXPECT_EQ(ratio, 0.0) << "at " << stamp;
+      EXPECT_EQ(span.older, older) << "at " << stamp;
+    } else if (stamp == newest) {
+      EXPECT_EQ(ratio, 1.0) << "at " << stamp;
+    } else {
+      EXPECT_TRUE(sameSpan(SampleSpan{older, newer, ratio, span.parent, arc}, span))
+          << "at " << stamp;
+    }
+  }
+}
+
 TEST(TimeCache, SpanWithinAgreesWithFindFromAnyHintOverUnevenSamples) {
   const std::vector<std::int64_t> stamps = unevenStamps(200, 9);
   TimeCache cache;
   for (const std::int64_t stamp : stamps) cache.insert(sampleAt(stamp), kKeepAll);
   EXPECT_GT(expectSpanWithinAgreesWithFind(cache, stamps), 0u)
       << "even spacing guessed every sample: the search beyond the guess went untested";
+  expectNewestPairAgreesWithFind(cache);
 }
 
 TEST(TimeCache, SpanWithinAgreesWithFindAfterTheRingWrapsAround) {
@@ -377,6 +419,7 @@ TEST(TimeCache, SpanWithinAgreesWithFindAfterTheRingWrapsAround) {
   for (const std::int64_t stamp : stamps) expectExactly(cache, stamp, valueAt(stamp));
   EXPECT_GT(expectSpanWithinAgreesWithFind(cache, stamps), 0u)
       << "even spacing guessed every sample: the search beyond the guess went untested";
+  expectNewestPairAgreesWithFind(cache);
 }
 
 TEST(TimeCache, AnOlderSampleWithAnotherParentKeepsEachSamplesParent) {
@@ -479,6 +522,7 @@ TEST(TimeCache, SteadinessFollowsTheSpacingOfTheSamplesKept) {
   const auto check = [&] {
     expectSpanWithinAgreesWithFind(cache, stamps);
     expectRatiosAreQuotients(cache, stamps);
+    expectNewestPairAgreesWithFind(cache);
   };
   EXPECT_FALSE(cache.isSteady());
   for (std::int64_t k = 0; k < 30; ++k) add(1000 + 10 * k);
@@ -502,6 +546,21 @@ TEST(TimeCache, SteadinessFollowsTheSpacingOfTheSamplesKept) {
   check();
   add(newest);  // the newest again: the stamps stay as they were
   EXPECT_TRUE(cache.isSteady());
+}
+
+TEST(TimeCache, NewestPairNeedsTwoSamples) {
+  TimeCache cache;
+  expectNewestPairAgreesWithFind(cache);
+  cache.insert(sampleAt(1000), kKeepAll);
+  expectNewestPairAgreesWithFind(cache);
+  cache.insert(sampleAt(1010), kKeepAll);
+  expectNewestPairAgreesWithFind(cache);
+  const Transform* older = nullptr;
+  const Transform* newer = nullptr;
+  double arc = 0.0;
+  EXPECT_TRUE(cache.newestPair(older, newer, arc));
+  EXPECT_TRUE(holds(older, valueAt(1000)));
+  EXPECT_TRUE(holds(newer, valueAt(1010)));
 }
 
 TEST(TimeCache, EdgeWithIntervalsTooLongToKeepIsNeverSteady) {

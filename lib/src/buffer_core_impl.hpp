@@ -150,14 +150,14 @@ class BufferCore::Impl {
   bool planQuickLookup(FrameId target, FrameId source, std::int64_t stamp, bool prefetch,
                        detail::QuickPath& path) const;
   Transform quickValue(FrameId target, FrameId source, std::int64_t stamp,
-                       const detail::QuickPath& path) const;
+                       detail::QuickPath& path) const;
   /// The stamped result of `path`, planned by planQuickLookup(), built where the caller
   /// receives it: its names are copied while the samples the plan asked for load (a braced
   /// list keeps the order written) and its value is written in place. 27 instructions fewer a
   /// lookup than filling a value and copying it in, 2 % of a deepest lookup on the wide tree
   /// of buffer_core_bench.
   TransformStamped quickStamped(FrameId target, FrameId source, std::int64_t stamp,
-                                const detail::QuickPath& path) const {
+                                detail::QuickPath& path) const {
     return TransformStamped{fromUtime(path.plan.at), std::string(nameOf(target)),
                             std::string(nameOf(source)), quickValue(target, source, stamp, path)};
   }

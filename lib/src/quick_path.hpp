@@ -9,10 +9,19 @@ namespace lcmtf::detail {
 /// Longer paths are left to the walk, so that a quick lookup needs no heap.
 constexpr std::size_t kMostQuickSteps = 64;
 
-/// A plan as a quick lookup makes it, with room for its steps.
+/// A plan as a quick lookup makes it, with room for its steps and for working out their values
+/// (`values`, pointing at static values or into `rooms`, which `tasks` fill). A plan at the
+/// latest common time that took its samples as it went (`sampled`) leaves `steps` unwritten
+/// and its plan's `steps` null: its values and first `task_count` tasks are set already.
 struct QuickPath {
   PathPlan plan;
   PlanStep steps[kMostQuickSteps];
+  bool sampled = false;
+  std::size_t task_count;
+  const Transform* values[kMostQuickSteps];
+  InterpolationTask tasks[kMostQuickSteps];
+  const TimeCache* task_caches[kMostQuickSteps];  // the edge of each task
+  TransformRoom rooms[kMostQuickSteps];
 };
 
 }  // namespace lcmtf::detail

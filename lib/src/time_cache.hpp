@@ -102,6 +102,33 @@ class TimeCache {
   std::int64_t newestStamp() const { return newest_stamp_; }
   FrameId newestParent() const { return newest_parent_; }
 
+  /// For a lookup at the latest common time, before that time is known: the edge's two newest
+  /// samples and the arc between them; false when it has fewer.
+  bool newestPair(const Transform*& older, const Transform*& newer, double& arc) const {
+    if (count_ < 2) return false;
+    const std::size_t at = slot(count_ - 2);
+    older = &samples_.transform(at);
+    newer = &samples_.transform(at + 1 == samples_.size() ? 0 : at + 1);
+    arc = samples_.arc(at);
+    return true;
+  }
+  /// The ratio at `stamp` from the older of the two newest samples to the newer, as find()
+  /// gives it (1 at the newer's stamp); false when `stamp` is not between them.
+  bool ratioInNewestPair(std::int64_t stamp, double& ratio) const {
+    if (stamp == newest_stamp_) {
+      ratio = 1.0;
+      return true;
+    }
+    const std::int64_t older_stamp =
+        isSteady() ? newest_stamp_ - steady_interval_ : stampAt(count_ - 2);
+    const std::int64_t offset = stamp - older_stamp;
+    if (offset < 0 || stamp > newest_stamp_) return false;
+    ratio = isSteady()
+                ? steadyRatio(offset)
+                : static_cast<double>(offset) / static_cast<double>(newest_stamp_ - older_stamp);
+    return true;
+  }
+
   /// The samples that give the edge's value at `stamp` (any stamp for a static edge).
   SampleStatus find(std::int64_t stamp, SampleSpan& span) const;
   /// find() for a dynamic edge whose samples all have one parent and that has data at
