@@ -80,6 +80,13 @@ struct LatestBounds {
   bool cover(std::int64_t at) const {
     return at >= single_parent_from && !(zero_stamped && at > 0);
   }
+  // The latest common time of the edges added, into `at` (left as it is when none is dynamic);
+  // false when they do not all cover it.
+  bool commonTime(std::int64_t& at) const {
+    if (!common.any_dynamic) return true;
+    at = common.stamp;
+    return cover(at);
+  }
 };
 
 // Fills `out` with the steps of one side; false when a dynamic edge among them has changed
@@ -142,6 +149,15 @@ bool mayDifferAbove(const RootPaths::Path& path, std::size_t from, std::int64_t 
   return false;
 }
 
+// Whether a lookup at `at` from `up_from_source` may climb past where the paths meet onto
+// another tree than theirs (mayDifferAbove()), when any edge has changed parent. Where the
+// target is on the source's way up, the climb ends there; else it goes on.
+bool mayClimbElsewhere(const RootPaths::Path& up_from_source, const MeetingPoint& meeting,
+                       std::int64_t at, bool parent_changes) {
+  return parent_changes && meeting.target_count > 0 &&
+         mayDifferAbove(up_from_source, meeting.source_count, at);
+}
+
 // The steps of one side of a lookup at the latest common time, taken with their samples: a
 // static step's value, and for a dynamic edge an interpolation task between its two newest
 // samples, whose ratio waits for that time. False when an edge has fewer than two samples.
@@ -186,17 +202,11 @@ bool sampleLatest(const RootPaths::Path& up_from_source, const RootPaths::Path& 
     return false;
   }
   std::int64_t at = 0;
-  if (latest.common.any_dynamic) {
-    at = latest.common.stamp;
-    if (!latest.cover(at)) return false;
-  }
+  if (!latest.commonTime(at)) return false;
   for (std::size_t index = 0; index < path.task_count; ++index) {
     if (!path.task_caches[index]->ratioInNewestPair(at, path.tasks[index].ratio)) return false;
   }
-  if (parent_changes && meeting.target_count > 0 &&
-      mayDifferAbove(up_from_source, meeting.source_count, at)) {
-    return false;
-  }
+  if (mayClimbElsewhere(up_from_source, meeting, at, parent_changes)) return false;
   path.plan = PathPlan{nullptr, meeting.source_count, meeting.target_count, at};
   path.sampled = true;
   return true;
@@ -232,15 +242,8 @@ bool planPath(const RootPaths& root_paths, const FrameTable& frames, FrameId tar
     return false;
   }
   std::int64_t at = stamp;
-  if (stamp == 0 && latest.common.any_dynamic) {
-    at = latest.common.stamp;
-    if (!latest.cover(at)) return false;
-  }
-  // Where the target is on the source's way up, the climb ends there; else it goes on.
-  if (parent_changes && meeting.target_count > 0 &&
-      mayDifferAbove(up_from_source, meeting.source_count, at)) {
-    return false;
-  }
+  if (stamp == 0 && !latest.commonTime(at)) return false;
+  if (mayClimbElsewhere(up_from_source, meeting, at, parent_changes)) return false;
   path.plan = PathPlan{steps, meeting.source_count, meeting.target_count, at};
   return true;
 }

@@ -108,7 +108,7 @@ class TimeCache {
     if (count_ < 2) return false;
     const std::size_t at = slot(count_ - 2);
     older = &samples_.transform(at);
-    newer = &samples_.transform(at + 1 == samples_.size() ? 0 : at + 1);
+    newer = &samples_.transform(slot(count_ - 1));
     arc = samples_.arc(at);
     return true;
   }
@@ -123,9 +123,7 @@ class TimeCache {
         isSteady() ? newest_stamp_ - steady_interval_ : stampAt(count_ - 2);
     const std::int64_t offset = stamp - older_stamp;
     if (offset < 0 || stamp > newest_stamp_) return false;
-    ratio = isSteady()
-                ? steadyRatio(offset)
-                : static_cast<double>(offset) / static_cast<double>(newest_stamp_ - older_stamp);
+    ratio = ratioPast(offset, newest_stamp_ - older_stamp);
     return true;
   }
 
@@ -220,10 +218,13 @@ class TimeCache {
     const std::int64_t older_stamp = samples_.stamp(at);
     const std::int64_t offset = stamp - older_stamp;
     return SampleSpan{&samples_.transform(at), &samples_.transform(next),
-                      isSteady() ? steadyRatio(offset)
-                                 : static_cast<double>(offset) /
-                                       static_cast<double>(samples_.stamp(next) - older_stamp),
-                      parent, samples_.arc(at)};
+                      ratioPast(offset, samples_.stamp(next) - older_stamp), parent,
+                      samples_.arc(at)};
+  }
+  /// The ratio `offset` microseconds past a sample, `interval` before the next one.
+  double ratioPast(std::int64_t offset, std::int64_t interval) const {
+    return isSteady() ? steadyRatio(offset)
+                      : static_cast<double>(offset) / static_cast<double>(interval);
   }
   /// The ratio `offset` microseconds past a sample of a steady edge, which a multiplication by
   /// the inverse of the interval gives to within an ulp of the quotient.
