@@ -548,6 +548,52 @@ TEST(TimeCache, SteadinessFollowsTheSpacingOfTheSamplesKept) {
   EXPECT_TRUE(cache.isSteady());
 }
 
+// The ratio between two samples depends on their stamps alone, not on the edge's other samples
+// or the order they came in: a log replayed into a buffer that keeps less history, or one that
+// saw a late sample, interpolates bit for bit as the live buffer did. Pairs at the steady
+// intervals of 100, 30 and 1,000 Hz, where a steady edge's ratios are asked for.
+TEST(TimeCache, RatioBetweenTwoSamplesDependsOnTheirStampsAlone) {
+  for (const std::int64_t interval : {10'000, 33'333, 1'000}) {
+    const std::int64_t start = 1'000'000;
+    const std::int64_t older = start + 10 * interval;
+    const std::int64_t newer = older + interval;
+    TimeCache steady;
+    TimeCache uneven_oldest;
+    TimeCache late_sample;
+    TimeCache short_window;
+    uneven_oldest.insert(sampleAt(start - 7), kKeepAll);
+    for (std::int64_t stamp = start; stamp <= newer; stamp += interval) {
+      steady.insert(sampleAt(stamp), kKeepAll);
+      uneven_oldest.insert(sampleAt(stamp), kKeepAll);
+      short_window.insert(sampleAt(stamp), 3 * interval);
+      if (stamp != older - interval) late_sample.insert(sampleAt(stamp), kKeepAll);
+    }
+    late_sample.insert(sampleAt(older - interval), kKeepAll);
+    ASSERT_TRUE(steady.isSteady());
+    const TimeCache* others[] = {&uneven_oldest, &late_sample, &short_window};
+    std::size_t differing = 0;
+    for (std::int64_t stamp = older + 1; stamp < newer; ++stamp) {
+      SampleSpan expected;
+      ASSERT_EQ(steady.find(stamp, expected), SampleStatus::kOk);
+      EXPECT_DOUBLE_EQ(expected.ratio,
+                       static_cast<double>(stamp - older) / static_cast<double>(interval));
+      for (const TimeCache* other : others) {
+        SampleSpan span;
+        ASSERT_EQ(other->find(stamp, span), SampleStatus::kOk);
+        const SampleSpan within = other->spanWithin(stamp, other->prefetch(stamp));
+        double newest_pair_ratio = -1.0;
+        ASSERT_TRUE(other->ratioInNewestPair(stamp, newest_pair_ratio));
+        if (span.ratio != expected.ratio || within.ratio != expected.ratio ||
+            newest_pair_ratio != expected.ratio) {
+          ++differing;
+        }
+      }
+    }
+    EXPECT_EQ(differing, 0u) << "ratios that differ in their last bits, " << interval
+                             << " us apart";
+  }
+}
+
 TEST(TimeCache, NewestPairNeedsTwoSamples) {
   TimeCache cache;
   expectNewestPairAgreesWithFind(cache);

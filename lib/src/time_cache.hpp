@@ -221,13 +221,16 @@ class TimeCache {
                       ratioPast(offset, samples_.stamp(next) - older_stamp), parent,
                       samples_.arc(at)};
   }
-  /// The ratio `offset` microseconds past a sample, `interval` before the next one.
+  /// The ratio `offset` microseconds past a sample, `interval` before the next one: the offset
+  /// times the interval's reciprocal (within an ulp of the quotient), so that a steady edge's
+  /// ratio, from the reciprocal it keeps, is the same to the bit as the ratio between the same
+  /// two samples of an edge with other samples.
   double ratioPast(std::int64_t offset, std::int64_t interval) const {
     return isSteady() ? steadyRatio(offset)
-                      : static_cast<double>(offset) / static_cast<double>(interval);
+                      : static_cast<double>(offset) * (1.0 / static_cast<double>(interval));
   }
-  /// The ratio `offset` microseconds past a sample of a steady edge, which a multiplication by
-  /// the inverse of the interval gives to within an ulp of the quotient.
+  /// ratioPast() for a steady edge, whose samples_per_utime_ is the reciprocal of its interval
+  /// rounded as 1.0 / interval rounds it: (count - 1) / ((count - 1) * interval).
   double steadyRatio(std::int64_t offset) const {
     return static_cast<double>(offset) * samples_per_utime_;
   }
