@@ -20,6 +20,7 @@ using detail::kMostQuickSteps;
 using detail::PathPlan;
 using detail::PlanStep;
 using detail::QuickPath;
+using detail::QuickPlan;
 
 // Where two paths meet: how many steps of each are taken, and whether each one's last step
 // is anchored. Where each path's last step crosses the static chain the other path crosses
@@ -213,12 +214,13 @@ bool sampleLatest(const RootPaths::Path& up_from_source, const RootPaths::Path& 
 }
 
 // Plans the lookup of `source` in `target` at `stamp` (0: the latest common time, which the
-// plan's `at` then gives), starting the loads of the samples when `prefetch`, and at the latest
-// common time taking them too when `sample_latest` (sampleLatest()); false when the root paths
-// cannot answer. `parent_changes` says whether any edge's history holds more than one parent.
+// plan's `at` then gives) into `path`, starting the loads of the samples when `prefetch`, and at
+// the latest common time taking them too into `sampling` (sampleLatest()), the QuickPath that
+// `path` is, unless null; false when the root paths cannot answer. `parent_changes` says whether
+// any edge's history holds more than one parent.
 bool planPath(const RootPaths& root_paths, const FrameTable& frames, FrameId target, FrameId source,
-              std::int64_t stamp, bool prefetch, bool sample_latest, bool parent_changes,
-              QuickPath& path) {
+              std::int64_t stamp, bool prefetch, bool parent_changes, QuickPlan& path,
+              QuickPath* sampling) {
   RootPaths::Path up_from_source;
   RootPaths::Path up_from_target;
   if (!root_paths.find(frames, source, up_from_source) ||
@@ -229,8 +231,8 @@ bool planPath(const RootPaths& root_paths, const FrameTable& frames, FrameId tar
   const MeetingPoint meeting = meetingPoint(up_from_source, up_from_target, source, target);
   const std::size_t count = meeting.source_count + meeting.target_count;
   if (count > kMostQuickSteps) return false;
-  if (stamp == 0 && sample_latest &&
-      sampleLatest(up_from_source, up_from_target, meeting, parent_changes, path)) {
+  if (stamp == 0 && sampling &&
+      sampleLatest(up_from_source, up_from_target, meeting, parent_changes, *sampling)) {
     return true;
   }
   PlanStep* const steps = path.steps;
@@ -261,7 +263,7 @@ double magnitudeOf(const PathPlan& plan, const Transform* const* values) {
 // same parent (as a robot's frames hang below map -> odom -> base_link), the chain and its
 // inverse cancel in the product. Two compositions fewer: 4 % of the instructions of a
 // time-travel lookup on the wide tree of buffer_core_bench, 2 % on deep_chain.
-const Transform* dropSharedAnchor(QuickPath& source_path, QuickPath& target_path) {
+const Transform* dropSharedAnchor(QuickPlan& source_path, QuickPlan& target_path) {
   const std::size_t source_count = source_path.plan.source_count;
   const std::size_t target_count = target_path.plan.target_count;
   if (source_count == 0 || target_count == 0) return nullptr;
@@ -286,8 +288,8 @@ struct QuickSamplerRoom {
 bool BufferCore::Impl::planQuickLookup(FrameId target, FrameId source, std::int64_t stamp,
                                        bool prefetch, QuickPath& path) const {
   return detail::quickLookupsEnabled() && max_gap_ == 0 &&
-         planPath(root_paths_, frames_, target, source, stamp, prefetch, prefetch,
-                  parent_changing_edges_ != 0, path);
+         planPath(root_paths_, frames_, target, source, stamp, prefetch,
+                  parent_changing_edges_ != 0, path, prefetch ? &path : nullptr);
 }
 
 Transform BufferCore::Impl::quickValue(FrameId target, FrameId source, std::int64_t stamp,
@@ -326,14 +328,14 @@ bool BufferCore::Impl::quickTimeTravel(FrameId target, std::int64_t& target_stam
   if (!detail::quickLookupsEnabled() || max_gap_ != 0 || source == fixed || target == fixed) {
     return false;
   }
-  QuickPath source_path;
-  QuickPath target_path;
+  QuickPlan source_path;
+  QuickPlan target_path;
   const bool parent_changes = parent_changing_edges_ != 0;
   // Each half's steps are sampled with the other's, in one batch: neither samples as it plans.
-  if (!planPath(root_paths_, frames_, fixed, source, source_stamp, true, false, parent_changes,
-                source_path) ||
-      !planPath(root_paths_, frames_, target, fixed, target_stamp, true, false, parent_changes,
-                target_path)) {
+  if (!planPath(root_paths_, frames_, fixed, source, source_stamp, true, parent_changes,
+                source_path, nullptr) ||
+      !planPath(root_paths_, frames_, target, fixed, target_stamp, true, parent_changes,
+                target_path, nullptr)) {
     return false;
   }
   // Where the fixed frame is where each path meets (an ancestor of both frames, as a map or
