@@ -230,7 +230,8 @@ class TimeCache {
                       : static_cast<double>(offset) * (1.0 / static_cast<double>(interval));
   }
   /// ratioPast() for a steady edge, whose samples_per_utime_ is the reciprocal of its interval
-  /// rounded as 1.0 / interval rounds it: (count - 1) / ((count - 1) * interval).
+  /// rounded as 1.0 / interval rounds it: (count - 1) / ((count - 1) * interval), both exact
+  /// below 2^53 microseconds of history.
   double steadyRatio(std::int64_t offset) const {
     return static_cast<double>(offset) * samples_per_utime_;
   }
