@@ -1,5 +1,8 @@
 // BufferCore over four tree shapes (tree_shapes.hpp), and ROS tf2's BufferCore on the same data
-// when built with LCMTF_BENCH_WITH_TF2.
+// when built with LCMTF_BENCH_WITH_TF2. Besides the benchmark library's flags: --rounds=N (each
+// kind's alternating rounds, default 9) and --jitter-us=N (every dynamic edge's stamps off its
+// 100 Hz period by up to N microseconds either way, as a publisher stamping with a clock reading
+// leaves them; default 0, every stamp on its period).
 #include <benchmark/benchmark.h>
 #include <malloc.h>
 #include <sys/resource.h>
@@ -37,9 +40,14 @@ constexpr int kConcurrentRounds = 5;
 constexpr int kDefaultRounds = 9;
 constexpr double kRoundSeconds = 0.1;
 
+// How far each dynamic edge's stamps are off its period at most (--jitter-us), set from the
+// command line before the workloads are made.
+std::int64_t stamp_jitter = 0;
+
 const std::vector<Workload>& workloads() {
-  static const std::vector<Workload> all = {makePr2Workload(), makeDeepChainWorkload(),
-                                            makeWideWorkload(), makeForestWorkload()};
+  static const std::vector<Workload> all = {
+      makePr2Workload(stamp_jitter), makeDeepChainWorkload(stamp_jitter),
+      makeWideWorkload(stamp_jitter), makeForestWorkload(stamp_jitter)};
   return all;
 }
 
@@ -330,6 +338,10 @@ void printWorkloads() {
         w.shape.c_str(), w.frameCount(), w.dynamicEdgeCount(), w.samples, deepest.first,
         deepest.second, edges / n, dynamic / n);
   }
+  if (stamp_jitter > 0) {
+    std::printf("every dynamic edge's stamps off its period by up to %lld us either way\n",
+                static_cast<long long>(stamp_jitter));
+  }
   std::printf("\n");
 }
 
@@ -364,10 +376,10 @@ void printAgreement(std::size_t shape) {
 }
 #endif
 
-// Takes --rounds=N out of the arguments, leaving the rest to the benchmark library; false when
-// N is not a whole number from 1 to 100.
-bool takeRounds(int& argc, char** argv, int& rounds) {
-  const std::string flag = "--rounds=";
+// Takes `flag`N out of the arguments into `value`, leaving the rest to the benchmark library;
+// false when N is not a whole number from `least` to `most`.
+bool takeWholeNumber(int& argc, char** argv, const std::string& flag, long least, long most,
+                     long& value) {
   int kept = 1;
   bool good = true;
   for (int i = 1; i < argc; ++i) {
@@ -376,11 +388,11 @@ bool takeRounds(int& argc, char** argv, int& rounds) {
       argv[kept++] = argv[i];
       continue;
     }
-    const std::string value = argument.substr(flag.size());
+    const std::string text = argument.substr(flag.size());
     char* end = nullptr;
-    const long parsed = std::strtol(value.c_str(), &end, 10);
-    good = good && !value.empty() && *end == '\0' && parsed >= 1 && parsed <= 100;
-    if (good) rounds = static_cast<int>(parsed);
+    const long parsed = std::strtol(text.c_str(), &end, 10);
+    good = good && !text.empty() && *end == '\0' && parsed >= least && parsed <= most;
+    if (good) value = parsed;
   }
   argc = kept;
   return good;
@@ -397,11 +409,19 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     if (std::string(argv[i]).rfind("--benchmark_filter", 0) == 0) whole_run = false;
   }
-  int rounds = kDefaultRounds;
-  if (!takeRounds(argc, argv, rounds)) {
+  long rounds = kDefaultRounds;
+  if (!takeWholeNumber(argc, argv, "--rounds=", 1, 100, rounds)) {
     std::fprintf(stderr, "buffer_core_bench: --rounds takes a whole number from 1 to 100\n");
     return 1;
   }
+  long jitter = 0;
+  constexpr long kMostJitter = Workload::kPeriod / 2 - 1;
+  if (!takeWholeNumber(argc, argv, "--jitter-us=", 0, kMostJitter, jitter)) {
+    std::fprintf(stderr, "buffer_core_bench: --jitter-us takes a whole number from 0 to %ld\n",
+                 kMostJitter);
+    return 1;
+  }
+  stamp_jitter = jitter;
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   printWorkloads();

@@ -15,7 +15,7 @@ using bench::Workload;
 // A forest of a few hundred frames: adding frames and looking up in many small trees.
 Workload makeSmallForest() {
   return bench::detail::makeWorkload(
-      "forest", 20, 100, 0.5, [](Workload& w, auto&) { bench::detail::buildForest(w, 50, 8); });
+      "forest", 20, 100, 0.5, 0, [](Workload& w, auto&) { bench::detail::buildForest(w, 50, 8); });
 }
 
 // Keeps the results, so that the compiler leaves every call in.

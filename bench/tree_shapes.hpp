@@ -93,10 +93,11 @@ inline void buildForest(Workload& w, std::size_t trees, std::size_t frames_per_t
 // moving with `samples` samples each.
 template <class BuildTree>
 Workload makeWorkload(const char* shape, std::size_t samples, std::uint64_t seed,
-                      double dynamic_fraction, BuildTree build) {
+                      double dynamic_fraction, std::int64_t stamp_jitter, BuildTree build) {
   Workload w;
   w.shape = shape;
   w.samples = samples;
+  w.stamp_jitter = stamp_jitter;
   std::mt19937_64 rng(seed);
   build(w, rng);
   buildMotion(w, rng, dynamic_fraction);
@@ -108,27 +109,27 @@ Workload makeWorkload(const char* shape, std::size_t samples, std::uint64_t seed
 
 /// The robot of the first measurements: 100 frames, a third of the edges dynamic with 10 s at
 /// 100 Hz, one limb 27 deep.
-inline Workload makePr2Workload() {
-  return detail::makeWorkload("pr2", 1000, 20240601, 1.0 / 3.0,
+inline Workload makePr2Workload(std::int64_t stamp_jitter = 0) {
+  return detail::makeWorkload("pr2", 1000, 20240601, 1.0 / 3.0, stamp_jitter,
                               [](Workload& w, auto& rng) { detail::buildPr2Tree(w, rng, 100); });
 }
 
 /// 100 frames around a chain 30 edges deep, a third of the edges dynamic with 10 s at 100 Hz.
-inline Workload makeDeepChainWorkload() {
-  return detail::makeWorkload("deep_chain", 1000, 27, 1.0 / 3.0, [](Workload& w, auto& rng) {
-    detail::buildDeepChain(w, rng, 30, 100);
-  });
+inline Workload makeDeepChainWorkload(std::int64_t stamp_jitter = 0) {
+  return detail::makeWorkload(
+      "deep_chain", 1000, 27, 1.0 / 3.0, stamp_jitter,
+      [](Workload& w, auto& rng) { detail::buildDeepChain(w, rng, 30, 100); });
 }
 
 /// 1,000 frames at most five edges below the root, a third dynamic with 10 s at 100 Hz.
-inline Workload makeWideWorkload() {
-  return detail::makeWorkload("wide", 1000, 1000, 1.0 / 3.0,
+inline Workload makeWideWorkload(std::int64_t stamp_jitter = 0) {
+  return detail::makeWorkload("wide", 1000, 1000, 1.0 / 3.0, stamp_jitter,
                               [](Workload& w, auto& rng) { detail::buildWideTree(w, rng, 1000); });
 }
 
 /// 100,000 frames in ten 4-ary trees, half the edges dynamic with 0.2 s at 100 Hz.
-inline Workload makeForestWorkload() {
-  return detail::makeWorkload("forest", 20, 100000, 0.5,
+inline Workload makeForestWorkload(std::int64_t stamp_jitter = 0) {
+  return detail::makeWorkload("forest", 20, 100000, 0.5, stamp_jitter,
                               [](Workload& w, auto&) { detail::buildForest(w, 10, 10'000); });
 }
 

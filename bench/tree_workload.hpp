@@ -52,13 +52,27 @@ struct Workload {
   std::int64_t newest_common = 0;
   std::vector<Query> random_pairs;   // two frames of one tree, at random times
   std::vector<Query> deepest_chain;  // frame 0 and `deepest`, either way round
+  // The most a dynamic edge's stamps are off its period, in microseconds, as those of a
+  // publisher that stamps with a clock reading are (0: every stamp on it); below kPeriod / 2,
+  // so that each edge's samples stay in order.
+  std::int64_t stamp_jitter = 0;
 
   std::size_t frameCount() const { return names.size(); }
   // How long each buffer keeps an edge's history: that of a dynamic edge, so that every insert
   // past it drops the edge's oldest sample.
   std::int64_t history() const { return static_cast<std::int64_t>(samples) * kPeriod; }
   std::int64_t stamp(const Edge& edge, std::size_t k) const {
-    return edge.first_stamp + static_cast<std::int64_t>(k) * kPeriod;
+    return edge.first_stamp + static_cast<std::int64_t>(k) * kPeriod + jitterOf(edge, k);
+  }
+  // How far sample `k` of `edge` is stamped off its period: up to stamp_jitter either way, the
+  // same in every run.
+  std::int64_t jitterOf(const Edge& edge, std::size_t k) const {
+    if (stamp_jitter == 0) return 0;
+    const std::uint64_t mixed =
+        (static_cast<std::uint64_t>(k) + 1) * 0x9e3779b97f4a7c15ull ^
+        static_cast<std::uint64_t>(edge.first_stamp) * 0xbf58476d1ce4e5b9ull;
+    const auto span = static_cast<std::uint64_t>(2 * stamp_jitter + 1);
+    return static_cast<std::int64_t>((mixed >> 17) % span) - stamp_jitter;
   }
   std::size_t dynamicEdgeCount() const {
     return static_cast<std::size_t>(
