@@ -87,14 +87,13 @@ void TimeCache::move(std::size_t from, std::size_t to) {
   const std::size_t source = slot(from);
   const std::size_t destination = slot(to);
   samples_.copy(samples_, source, destination);
-  samples_.arc(destination) = samples_.arc(source);
   if (parents_.size() != 0) parents_[destination] = parents_[source];
 }
 
 [[gnu::always_inline]] inline void TimeCache::refreshArc(std::size_t index) {
   if (index + 1 >= count_) return;
-  samples_.arc(slot(index)) =
-      signedArcSquared(transformAt(index).rotation, transformAt(index + 1).rotation);
+  samples_.setArc(slot(index),
+                  signedArcSquared(transformAt(index).rotation, transformAt(index + 1).rotation));
 }
 
 [[gnu::always_inline]] inline void TimeCache::noteParentChanges(std::size_t index) {
@@ -129,7 +128,6 @@ void TimeCache::grow(std::int64_t cache_time, std::size_t most_samples) {
   UnfilledArray<FrameId> parents(parents_.size() != 0 ? wanted : 0);
   for (std::size_t i = 0; i < count_; ++i) {
     samples.copy(samples_, slot(i), i);
-    samples.arc(i) = samples_.arc(slot(i));
     if (parents.size() != 0) parents[i] = parents_[slot(i)];
   }
   samples_.swap(samples);

@@ -52,9 +52,9 @@ inline std::int64_t saturatingSubtract(std::int64_t a, std::int64_t b) {
 }
 
 /// The history of one edge (child frame -> parent) kept in time order in a ring, or a single
-/// static value valid at every time. Each sample fills one cache line, its stamp beside its
-/// transform, with its arc to the next kept alongside; parents are kept a sample apiece only
-/// once the edge has had two.
+/// static value valid at every time. Each sample fills one cache line, its arc to the next
+/// beside its transform, with the stamps kept side by side apart from them (SampleRing);
+/// parents are kept a sample apiece only once the edge has had two.
 class TimeCache {
  public:
   bool isStatic() const { return is_static_; }
@@ -149,16 +149,17 @@ class TimeCache {
   /// data at `stamp`.
   std::size_t prefetch(std::int64_t stamp) const;
   /// Starts loading what inserting a sample newer than all those kept reads and writes: the
-  /// two oldest samples (pruning reads their stamps), the newest (the arc to the new one reads
-  /// its rotation) with its arc, and the slot after it.
+  /// oldest stamps (pruning reads them), the newest sample (the arc to the new one reads its
+  /// rotation and is written beside it), and the slot and stamp after it.
   void prefetchInsert() const {
     if (count_ < 2) return;
-    prefetchLine(samples_.address(slot(0)));
-    prefetchLine(samples_.address(slot(1)));
-    const std::size_t newest = slot(count_ - 1);
-    prefetchLine(samples_.address(newest));
-    prefetchLineToWrite(samples_.arcAddress(newest));
-    if (count_ < samples_.size()) prefetchLineToWrite(samples_.address(slot(count_)));
+    prefetchLine(samples_.stampAddress(slot(0)));
+    prefetchLineToWrite(samples_.address(slot(count_ - 1)));
+    if (count_ < samples_.size()) {
+      const std::size_t next = slot(count_);
+      prefetchLineToWrite(samples_.address(next));
+      prefetchLineToWrite(samples_.stampAddress(next));
+    }
   }
   /// A hint for spanWithin() at a time near the newest sample (as latest-common-time lookups
   /// ask): the sample before the newest, which spanWithin() checks, so that planning reads no
@@ -168,15 +169,18 @@ class TimeCache {
 
  private:
   /// Starts loading what interpolating from sample `index` to the next reads: both samples
-  /// and the arc between them, which lives apart from them. Loading every step's samples while
-  /// the path is still being planned costs 4-6 % more instructions a lookup at a given time,
-  /// and made those lookups faster: pr2's random ones of buffer_core_bench by about 5 %, the
-  /// forest's by 5-17 % (processes with and without it taking turns, fastest and middle runs).
+  /// (the arc between them beside the older), and the older's stamp unless the edge is steady,
+  /// whose ratios need none. Loading every step's samples while the path is still being
+  /// planned costs 4-6 % more instructions a lookup at a given time, and made those lookups
+  /// faster: pr2's random ones of buffer_core_bench by about 5 %, the forest's by 5-17 %
+  /// (processes with and without it taking turns, fastest and middle runs). The stamp, which
+  /// the ratio waits for, is asked for first: asked for last, the lookups of buffer_core_bench
+  /// --jitter-us=300 on pr2 and deep_chain ran 8-16 % slower.
   [[gnu::always_inline]] void prefetchSpan(std::size_t index) const {
     const std::size_t at = slot(index);
+    if (!isSteady()) prefetchLine(samples_.stampAddress(at));
     prefetchLine(samples_.address(at));
     prefetchLine(samples_.address(slot(index + 1)));
-    prefetchLine(samples_.arcAddress(at));
   }
   std::size_t slot(std::size_t index) const {
     const std::size_t at = head_ + index;
