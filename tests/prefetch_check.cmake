@@ -8,10 +8,11 @@ if(NOT status EQUAL 0)
 endif()
 string(REGEX MATCHALL "[ \t]prefetch[a-z0-9]*[ \t]" prefetches "${disassembly}")
 list(LENGTH prefetches count)
-# A lookup's plan loads three lines for each dynamic edge of either side (six instructions, one
-# loop for each side), an insert five for the next edge's samples besides that edge's name and
-# three lines of the following edge's record (nine).
-set(fewest 10)
+# Where nothing is inlined (the fewest): a lookup's plan loads up to three lines for each dynamic
+# edge (its stamps, unless it is steady, and two samples), an insert four for the edge after next
+# (its oldest stamps, its newest sample, and the slot and stamp a new sample takes) besides that
+# edge's name and the lines of the following edge's record (nine).
+set(fewest 9)
 if(count LESS fewest)
   message(FATAL_ERROR "${LIBRARY} holds ${count} prefetch instructions, fewer than ${fewest}: "
                       "the compiler dropped some (see lib/src/prefetch.hpp)")
