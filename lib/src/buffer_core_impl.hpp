@@ -144,11 +144,20 @@ class BufferCore::Impl {
   /// not answer as the walk would: a frame without a path, an edge on the way whose history
   /// changes parent, or any failure; then the walk must, and `stamp` is left as it was.
   bool quickLookup(FrameId target, FrameId source, std::int64_t& stamp, Transform* value) const;
+  /// quickLookup() with a value, in a frame of its own: the rooms for sampling the path take
+  /// 11 KiB of the stack, which a lookup without a value (canTransform(), the latest common
+  /// time) then leaves alone.
+  [[gnu::noinline]] bool quickLookupInto(FrameId target, FrameId source, std::int64_t& stamp,
+                                         Transform& value) const;
   /// quickLookup() in two halves, for callers with work to do while the samples load: the
   /// plan, whose `at` is the stamp of the answer, with the loads of its samples started when
   /// `prefetch` (false when quickLookup() would be), then its value.
   bool planQuickLookup(FrameId target, FrameId source, std::int64_t stamp, bool prefetch,
                        detail::QuickPath& path) const;
+  /// planQuickLookup() into a plan alone, sampling at the latest common time into `sampling`
+  /// (the QuickPath that `path` is) unless null.
+  bool planQuickly(FrameId target, FrameId source, std::int64_t stamp, bool prefetch,
+                   detail::QuickPlan& path, detail::QuickPath* sampling) const;
   Transform quickValue(FrameId target, FrameId source, std::int64_t stamp,
                        detail::QuickPath& path) const;
   /// The stamped result of `path`, planned by planQuickLookup(), built where the caller

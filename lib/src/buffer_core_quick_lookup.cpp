@@ -287,9 +287,14 @@ struct QuickSamplerRoom {
 
 bool BufferCore::Impl::planQuickLookup(FrameId target, FrameId source, std::int64_t stamp,
                                        bool prefetch, QuickPath& path) const {
+  return planQuickly(target, source, stamp, prefetch, path, prefetch ? &path : nullptr);
+}
+
+bool BufferCore::Impl::planQuickly(FrameId target, FrameId source, std::int64_t stamp,
+                                   bool prefetch, QuickPlan& path, QuickPath* sampling) const {
   return detail::quickLookupsEnabled() && max_gap_ == 0 &&
          planPath(root_paths_, frames_, target, source, stamp, prefetch,
-                  parent_changing_edges_ != 0, path, prefetch ? &path : nullptr);
+                  parent_changing_edges_ != 0, path, sampling);
 }
 
 Transform BufferCore::Impl::quickValue(FrameId target, FrameId source, std::int64_t stamp,
@@ -309,13 +314,22 @@ Transform BufferCore::Impl::quickValue(FrameId target, FrameId source, std::int6
   return value;
 }
 
+bool BufferCore::Impl::quickLookupInto(FrameId target, FrameId source, std::int64_t& stamp,
+                                       Transform& value) const {
+  QuickPath path;
+  if (!planQuickLookup(target, source, stamp, true, path)) return false;
+  value = quickValue(target, source, stamp, path);
+  stamp = path.plan.at;
+  return true;
+}
+
 bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t& stamp,
                                    Transform* value) const {
-  QuickPath path;
-  if (!planQuickLookup(target, source, stamp, value != nullptr, path)) return false;
-  if (value) {
-    *value = quickValue(target, source, stamp, path);
-  } else if (detail::crossCheckQuickLookups()) {
+  if (value) return quickLookupInto(target, source, stamp, *value);
+  // Whether it can answer, and at what time: the plan alone, without the rooms for sampling it.
+  QuickPlan path;
+  if (!planQuickly(target, source, stamp, false, path, nullptr)) return false;
+  if (detail::crossCheckQuickLookups()) {
     crossCheck(target, source, stamp, path.plan.at, nullptr, 0.0);
   }
   stamp = path.plan.at;
