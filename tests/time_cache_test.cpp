@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <random>
 #include <set>
 #include <vector>
@@ -376,6 +377,28 @@ void expectNewestPairAgreesWithFind(const TimeCache& cache) {
   }
 }
 
+// Expects each of `stamps` (those the cache keeps, in order) but the newest to carry the arc to
+// the sample after it, as interpolating between them reads it. `version` gives each stamp's value.
+void expectArcsToTheNextSample(const TimeCache& cache, const std::vector<std::int64_t>& stamps,
+                               const std::map<std::int64_t, int>& version = {}) {
+  const auto valueOf = [&version](std::int64_t stamp) {
+    const auto found = version.find(stamp);
+    return valueAt(stamp, found == version.end() ? 0 : found->second);
+  };
+  for (std::size_t i = 0; i + 1 < stamps.size(); ++i) {
+    if (stamps[i + 1] - stamps[i] < 2) continue;
+    SampleSpan span;
+    ASSERT_EQ(cache.find(stamps[i] + 1, span), SampleStatus::kOk) << "after " << stamps[i];
+    ASSERT_TRUE(holds(span.older, valueOf(stamps[i]))) << "at " << stamps[i];
+    ASSERT_TRUE(holds(span.newer, valueOf(stamps[i + 1]))) << "at " << stamps[i + 1];
+    const double expected = signedArcSquared(span.older->rotation, span.newer->rotation);
+    EXPECT_TRUE(span.arc_squared == expected ||
+                (std::isnan(span.arc_squared) && std::isnan(expected)))
+        << "the sample at " << stamps[i] << " keeps the arc " << span.arc_squared
+        << " to the next, which is " << expected;
+  }
+}
+
 TEST(TimeCache, SpanWithinAgreesWithFindFromAnyHintOverUnevenSamples) {
   const std::vector<std::int64_t> stamps = unevenStamps(200, 9);
   TimeCache cache;
@@ -417,9 +440,39 @@ TEST(TimeCache, SpanWithinAgreesWithFindAfterTheRingWrapsAround) {
   const std::vector<std::int64_t> stamps(kept.begin(), kept.end());
   ASSERT_EQ(cache.size(), stamps.size());
   for (const std::int64_t stamp : stamps) expectExactly(cache, stamp, valueAt(stamp));
+  expectArcsToTheNextSample(cache, stamps);
   EXPECT_GT(expectSpanWithinAgreesWithFind(cache, stamps), 0u)
       << "even spacing guessed every sample: the search beyond the guess went untested";
   expectNewestPairAgreesWithFind(cache);
+}
+
+// Each sample's arc to the next is kept in the padding of its transform's slot: however a sample
+// arrives (after the others, between two, in place of one), and however the ring moves its
+// samples (inserting among them, growing), each sample keeps the arc to the one now after it.
+TEST(TimeCache, EachSampleKeepsTheArcToTheSampleAfterItInWhateverOrderTheyCame) {
+  std::mt19937_64 random(23);
+  const std::vector<std::int64_t> stamps = unevenStamps(300, 5);
+  std::vector<std::int64_t> order = stamps;
+  std::shuffle(order.begin(), order.end(), random);
+  TimeCache cache;
+  std::map<std::int64_t, int> version;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    ASSERT_EQ(cache.insert(sampleAt(order[i]), kKeepAll), InsertOutcome::kAdded);
+    if (i % 5 == 4) {
+      const std::int64_t again = order[i / 2];
+      ASSERT_EQ(cache.insert(sampleAt(again, kParent, 1), kKeepAll), InsertOutcome::kReplaced);
+      version[again] = 1;
+    }
+  }
+  ASSERT_EQ(cache.size(), stamps.size());
+  expectArcsToTheNextSample(cache, stamps, version);
+  // The newest sample replaced, then a sample after it.
+  ASSERT_EQ(cache.insert(sampleAt(stamps.back(), kParent, 2), kKeepAll), InsertOutcome::kReplaced);
+  version[stamps.back()] = 2;
+  std::vector<std::int64_t> longer = stamps;
+  longer.push_back(stamps.back() + 50);
+  ASSERT_EQ(cache.insert(sampleAt(longer.back()), kKeepAll), InsertOutcome::kAdded);
+  expectArcsToTheNextSample(cache, longer, version);
 }
 
 TEST(TimeCache, AnOlderSampleWithAnotherParentKeepsEachSamplesParent) {
