@@ -378,7 +378,7 @@ TransformStamped BufferCore::lookupTransform(const std::string& target, const st
   // The usual case first, with no failure record to fill in.
   detail::QuickPath path;
   if (target_id != kNoFrame && source_id != kNoFrame &&
-      impl_->planQuickLookup(target_id, source_id, stamp, true, path)) {
+      impl_->planQuickLookup(target_id, source_id, stamp, path)) {
     return impl_->quickStamped(target_id, source_id, stamp, path);
   }
   Transform value;
@@ -422,7 +422,7 @@ TransformStamped BufferCore::lookupTransform(FrameHandle target, FrameHandle sou
   impl_->checkHandles(target, source);
   // The usual case first, with no failure record to fill in.
   detail::QuickPath path;
-  if (target.id != source.id && impl_->planQuickLookup(target.id, source.id, stamp, true, path)) {
+  if (target.id != source.id && impl_->planQuickLookup(target.id, source.id, stamp, path)) {
     return impl_->quickStamped(target.id, source.id, stamp, path);
   }
   Transform value;
@@ -448,7 +448,7 @@ void BufferCore::lookupTransform(FrameHandle target, FrameHandle source, TimePoi
   std::int64_t stamp = toUtime(time);
   impl_->checkHandles(target, source);
   detail::QuickPath path;
-  if (target.id != source.id && impl_->planQuickLookup(target.id, source.id, stamp, true, path)) {
+  if (target.id != source.id && impl_->planQuickLookup(target.id, source.id, stamp, path)) {
     // The names first, while the samples the plan asked for load; copied after the value, as
     // the walk's are, they made wide's lookups into a result of buffer_core_bench 85 -> 97 ns.
     assignName(result.parent_frame, impl_->nameOf(target.id));

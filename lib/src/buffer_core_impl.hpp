@@ -150,12 +150,13 @@ class BufferCore::Impl {
   [[gnu::noinline]] bool quickLookupInto(FrameId target, FrameId source, std::int64_t& stamp,
                                          Transform& value) const;
   /// quickLookup() in two halves, for callers with work to do while the samples load: the
-  /// plan, whose `at` is the stamp of the answer, with the loads of its samples started when
-  /// `prefetch` (false when quickLookup() would be), then its value.
-  bool planQuickLookup(FrameId target, FrameId source, std::int64_t stamp, bool prefetch,
+  /// plan, whose `at` is the stamp of the answer, with the loads of its samples started, then
+  /// its value.
+  bool planQuickLookup(FrameId target, FrameId source, std::int64_t stamp,
                        detail::QuickPath& path) const;
-  /// planQuickLookup() into a plan alone, sampling at the latest common time into `sampling`
-  /// (the QuickPath that `path` is) unless null.
+  /// The plan of a quick lookup into `path`, starting the loads of its samples when `prefetch`,
+  /// and sampling at the latest common time into `sampling` (the QuickPath that `path` is)
+  /// unless null; false when quick lookups are off or cannot answer.
   bool planQuickly(FrameId target, FrameId source, std::int64_t stamp, bool prefetch,
                    detail::QuickPlan& path, detail::QuickPath* sampling) const;
   Transform quickValue(FrameId target, FrameId source, std::int64_t stamp,

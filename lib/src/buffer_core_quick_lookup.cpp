@@ -286,8 +286,8 @@ struct QuickSamplerRoom {
 }  // namespace
 
 bool BufferCore::Impl::planQuickLookup(FrameId target, FrameId source, std::int64_t stamp,
-                                       bool prefetch, QuickPath& path) const {
-  return planQuickly(target, source, stamp, prefetch, path, prefetch ? &path : nullptr);
+                                       QuickPath& path) const {
+  return planQuickly(target, source, stamp, true, path, &path);
 }
 
 bool BufferCore::Impl::planQuickly(FrameId target, FrameId source, std::int64_t stamp,
@@ -317,7 +317,7 @@ Transform BufferCore::Impl::quickValue(FrameId target, FrameId source, std::int6
 bool BufferCore::Impl::quickLookupInto(FrameId target, FrameId source, std::int64_t& stamp,
                                        Transform& value) const {
   QuickPath path;
-  if (!planQuickLookup(target, source, stamp, true, path)) return false;
+  if (!planQuickLookup(target, source, stamp, path)) return false;
   value = quickValue(target, source, stamp, path);
   stamp = path.plan.at;
   return true;
@@ -339,17 +339,12 @@ bool BufferCore::Impl::quickLookup(FrameId target, FrameId source, std::int64_t&
 bool BufferCore::Impl::quickTimeTravel(FrameId target, std::int64_t& target_stamp, FrameId source,
                                        std::int64_t& source_stamp, FrameId fixed,
                                        Transform& value) const {
-  if (!detail::quickLookupsEnabled() || max_gap_ != 0 || source == fixed || target == fixed) {
-    return false;
-  }
+  if (source == fixed || target == fixed) return false;
   QuickPlan source_path;
   QuickPlan target_path;
-  const bool parent_changes = parent_changing_edges_ != 0;
   // Each half's steps are sampled with the other's, in one batch: neither samples as it plans.
-  if (!planPath(root_paths_, frames_, fixed, source, source_stamp, true, parent_changes,
-                source_path, nullptr) ||
-      !planPath(root_paths_, frames_, target, fixed, target_stamp, true, parent_changes,
-                target_path, nullptr)) {
+  if (!planQuickly(fixed, source, source_stamp, true, source_path, nullptr) ||
+      !planQuickly(target, fixed, target_stamp, true, target_path, nullptr)) {
     return false;
   }
   // Where the fixed frame is where each path meets (an ancestor of both frames, as a map or
