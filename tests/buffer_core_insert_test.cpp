@@ -666,6 +666,38 @@ TEST(BufferCoreBatchInsert, StoresTheGoodTransformsAndCountsTheBadOnes) {
                                       1e-12));
 }
 
+// Rotations a little off unit length are normalized in a batch as one by one, each stored with
+// its own value whatever the transforms refused or normalized before it.
+TEST(BufferCoreBatchInsert, StoresEachTransformWithItsOwnValueAmongNormalizedAndRefusedOnes) {
+  BufferCore buffer;
+  buffer.setErrorReporter(nullptr);
+  const Eigen::Quaterniond unit = axisAngle(0.8, Eigen::Vector3d(1, 2, 3));
+  std::vector<TransformStamped> batch{stamped("world", "a", at(1), withTranslation(1, 0, 0)),
+                                      stamped("world", "b", at(1), scaledRotation(1.0009)),
+                                      stamped("world", "c", at(1), scaledRotation(0.5)),
+                                      stamped("world", "d", at(1), scaledRotation(0.9991)),
+                                      stamped("world", "e", at(1), withTranslation(0, 5, 0)),
+                                      stamped("world", "f", at(1), scaledRotation(1.0005))};
+  batch[1].transform.translation = Eigen::Vector3d(2, 0, 0);
+  batch[3].transform.translation = Eigen::Vector3d(4, 0, 0);
+  batch[5].transform.translation = Eigen::Vector3d(6, 0, 0);
+  EXPECT_EQ(buffer.setTransforms(batch, "batcher"), 5u);
+  EXPECT_EQ(buffer.statistics().normalized, 3u);
+  EXPECT_EQ(buffer.statistics().rejectedCount(InsertRejection::kBadQuaternion), 1u);
+  EXPECT_FALSE(buffer.frameExists("c"));
+  for (const auto& [child, translation] :
+       {std::pair{"a", Eigen::Vector3d(1, 0, 0)}, {"e", Eigen::Vector3d(0, 5, 0)}}) {
+    const Transform stored = buffer.lookupTransform("world", child, at(1)).transform;
+    EXPECT_EQ(stored.translation, translation) << child;
+    EXPECT_EQ(stored.rotation.coeffs(), axisAngle(0.3, kZ).coeffs()) << child;
+  }
+  for (const auto& [child, x] : {std::pair{"b", 2.0}, {"d", 4.0}, {"f", 6.0}}) {
+    const Transform stored = buffer.lookupTransform("world", child, at(1)).transform;
+    EXPECT_EQ(stored.translation, Eigen::Vector3d(x, 0, 0)) << child;
+    EXPECT_LE((stored.rotation.coeffs() - unit.coeffs()).cwiseAbs().maxCoeff(), 1e-15) << child;
+  }
+}
+
 TEST(BufferCoreBatchInsert, TakesTheCountGivenFromAnArray) {
   BufferCore buffer;
   const TransformStamped batch[] = {

@@ -222,9 +222,6 @@ class BufferCore::Impl {
   std::string describe(const LookupFailure& failure, const std::string& what) const;
   [[noreturn]] void raise(const LookupFailure& failure, const std::string& what) const;
 
-  /// Checks one transform; kCount when it is good, with its rotation normalized in `value`.
-  InsertRejection validate(const TransformStamped& transform, Transform& value, bool& normalized,
-                           std::string& reason) const;
   /// Stores a validated transform (exclusive lock); kCount when stored.
   InsertRejection store(const TransformStamped& transform, const Transform& value, bool normalized,
                         const std::string& authority, bool is_static, std::string& reason);
