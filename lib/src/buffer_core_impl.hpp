@@ -109,6 +109,13 @@ class BufferCore::Impl {
   /// Starts loading what storing the edges that came after `record`'s the time before will
   /// read (see the definition).
   void prefetchNextInserts(const FrameRecord& record) const;
+  /// Just after a dynamic sample of `record`'s edge is stored: starts loading the slot of the
+  /// edge's next sample when that is likely to stay in the cache until then (see the
+  /// definition).
+  void prefetchNextSample(FrameRecord& record);
+  /// Whether `record`'s edge was last stored within the last 1,024 samples the buffer stored:
+  /// a publisher of up to that many edges sends it again before its next slot leaves the cache.
+  bool comesBackSoon(const FrameRecord& record) const;
   std::string_view nameOf(FrameId id) const { return ids_.nameOf(id); }
   std::string quoted(FrameId id) const { return "'" + std::string(nameOf(id)) + "'"; }
 

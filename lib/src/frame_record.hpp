@@ -25,6 +25,9 @@ struct alignas(64) FrameRecord {
   // when its edge is not static), and the static edges between them composed, so a lookup
   // crosses a chain of static edges in one step.
   FrameId static_top = kNoFrame;
+  // The buffer's count of stored samples, modulo 2^32, once this edge's last dynamic sample
+  // was stored (BufferCore::Impl::prefetchNextSample()), in what was padding.
+  std::uint32_t stored_after = 0;
   detail::TimeCache cache;
   std::uint64_t authority_conflicts = 0;
   Transform static_top_T_frame;

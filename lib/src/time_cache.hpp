@@ -150,16 +150,22 @@ class TimeCache {
   std::size_t prefetch(std::int64_t stamp) const;
   /// Starts loading what inserting a sample newer than all those kept reads and writes: the
   /// oldest stamps (pruning reads them), the newest sample (the arc to the new one reads its
-  /// rotation and is written beside it), and the slot and stamp after it.
-  void prefetchInsert() const {
+  /// rotation and is written beside it), and the slot and stamp after it, the slot unless
+  /// prefetchNextSlot() loaded it already.
+  void prefetchInsert(bool next_slot_loaded) const {
     if (count_ < 2) return;
     prefetchLine(samples_.stampAddress(slot(0)));
     prefetchLineToWrite(samples_.address(slot(count_ - 1)));
     if (count_ < samples_.size()) {
       const std::size_t next = slot(count_);
-      prefetchLineToWrite(samples_.address(next));
+      if (!next_slot_loaded) prefetchLineToWrite(samples_.address(next));
       prefetchLineToWrite(samples_.stampAddress(next));
     }
+  }
+  /// Starts loading, to write, the slot that the next sample newer than all those kept goes
+  /// to.
+  void prefetchNextSlot() const {
+    if (count_ < samples_.size()) prefetchLineToWrite(samples_.address(slot(count_)));
   }
   /// A hint for spanWithin() at a time near the newest sample (as latest-common-time lookups
   /// ask): the sample before the newest, which spanWithin() checks, so that planning reads no
