@@ -256,10 +256,7 @@ std::size_t BufferCore::Impl::insert(const TransformStamped* transforms, std::si
     InsertRejection kind = detail::checkTransform(*transforms, norm, reason);
     Transform normalized_value;
     const bool normalized = norm != 1.0;
-    if (normalized) {
-      normalized_value = transforms->transform;
-      normalized_value.rotation.coeffs() /= norm;
-    }
+    if (normalized) normalized_value = detail::normalizedBy(transforms->transform, norm);
     {
       ExclusiveLock lock(lock_);
       if (kind == InsertRejection::kCount) {
@@ -297,8 +294,7 @@ std::size_t BufferCore::Impl::insert(const TransformStamped* transforms, std::si
     if (!checked[i].valid) {
       refusals.push_back({kind, std::move(reason)});
     } else if (checked[i].normalized) {
-      normalized_values.push_back(transforms[i].transform);
-      normalized_values.back().rotation.coeffs() /= norm;
+      normalized_values.push_back(detail::normalizedBy(transforms[i].transform, norm));
     }
   }
   std::size_t stored = 0;

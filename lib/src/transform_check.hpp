@@ -14,4 +14,11 @@ namespace lcmtf::detail {
 InsertRejection checkTransform(const TransformStamped& transform, double& rotation_norm,
                                std::string& reason);
 
+/// `value` with its rotation divided by the `rotation_norm` checkTransform() gave.
+inline Transform normalizedBy(const Transform& value, double rotation_norm) {
+  Transform normalized = value;
+  normalized.rotation.coeffs() /= rotation_norm;
+  return normalized;
+}
+
 }  // namespace lcmtf::detail

@@ -57,9 +57,8 @@ InsertRejection validateTransform(const TransformStamped& transform, Transform& 
                                   bool& normalized, std::string& reason) {
   double norm = 1.0;
   const InsertRejection rejection = detail::checkTransform(transform, norm, reason);
-  value = transform.transform;
   normalized = norm != 1.0;
-  if (normalized) value.rotation.coeffs() /= norm;
+  value = normalized ? detail::normalizedBy(transform.transform, norm) : transform.transform;
   return rejection;
 }
 
