@@ -65,20 +65,23 @@ class PathSampler {
       } else {
         step.cache->find(plan.at, span);
       }
-      if (!span.newer && !step.anchor) {
-        values[i] = span.older;
-        continue;
-      }
-      Transform* out = ::new (static_cast<void*>(storage_.rooms[rooms_++].bytes)) Transform;
-      values[i] = out;
-      // An exact sample to anchor is a task at ratio 0, so that every anchor is composed in
-      // the batch's wide instructions: 2-4 % of each lookup on pr2 in buffer_core_bench.
-      storage_.tasks[tasks_++] =
-          span.newer ? InterpolationTask{span.older, span.newer, span.ratio, out,
-                                         span.arc_squared, step.anchor}
-                     : InterpolationTask{span.older, span.older, 0.0, out, 0.0, step.anchor};
+      values[i] = take(span, step.anchor);
     }
   }
+  /// The value of a step whose samples are `span`, composed onto `anchor` unless null: the
+  /// older sample itself when exact and unanchored, else a room that run() fills.
+  const Transform* take(const SampleSpan& span, const Transform* anchor) {
+    if (!span.newer && !anchor) return span.older;
+    Transform* out = ::new (static_cast<void*>(storage_.rooms[rooms_++].bytes)) Transform;
+    // An exact sample to anchor is a task at ratio 0, so that every anchor is composed in
+    // the batch's wide instructions: 2-4 % of each lookup on pr2 in buffer_core_bench.
+    storage_.tasks[tasks_++] =
+        span.newer
+            ? InterpolationTask{span.older, span.newer, span.ratio, out, span.arc_squared, anchor}
+            : InterpolationTask{span.older, span.older, 0.0, out, 0.0, anchor};
+    return out;
+  }
+  std::size_t taskCount() const { return tasks_; }
   void run() const { interpolateBatch(storage_.tasks, tasks_); }
 
  private:

@@ -26,6 +26,7 @@ struct QuickPath : QuickPlan {
   const Transform* values[kMostQuickSteps];
   InterpolationTask tasks[kMostQuickSteps];
   const TimeCache* task_caches[kMostQuickSteps];  // the edge of each task
+  std::size_t hints[kMostQuickSteps];             // TimeCache::prefetch() of each dynamic step
   TransformRoom rooms[kMostQuickSteps];
 };
 

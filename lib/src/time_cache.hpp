@@ -99,6 +99,10 @@ class TimeCache {
   /// The oldest stamp from which spanWithin() may be asked for this edge's samples: the oldest
   /// sample's when all the samples have one parent, else none (the int64 maximum).
   std::int64_t singleParentFrom() const { return single_parent_from_; }
+  /// Whether spanWithin() may be asked for this edge's samples at `stamp`.
+  bool spansUnderOneParent(std::int64_t stamp) const {
+    return single_parent_from_ <= stamp && stamp <= newest_stamp_;
+  }
   std::int64_t newestStamp() const { return newest_stamp_; }
   FrameId newestParent() const { return newest_parent_; }
 
@@ -148,6 +152,8 @@ class TimeCache {
   /// returns where it guessed they are, as a hint for spanWithin(). For a dynamic edge with
   /// data at `stamp`.
   std::size_t prefetch(std::int64_t stamp) const;
+  /// prefetch()'s hint without the loads, for a caller about to read the samples itself.
+  std::size_t hintAt(std::int64_t stamp) const { return count_ < 2 ? kNoHint : guessIndex(stamp); }
   /// Starts loading what inserting a sample newer than all those kept reads and writes: the
   /// oldest stamps (pruning reads them), the newest sample (the arc to the new one reads its
   /// rotation and is written beside it), and the slot and stamp after it, the slot unless
