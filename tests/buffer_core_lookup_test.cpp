@@ -336,6 +336,77 @@ TEST(BufferCoreLookup, LookupInterpolatesEveryDynamicEdgeOnThePathAtTheSameTime)
   }
 }
 
+// link_0 -> link_1 -> ... -> link_7, every edge moving: edge i slides along y at (i + 1) cm/s and
+// turns about its own axis at 0.1 (i + 1) rad/s, sampled once a second from `first[i]` s to
+// 10 s.
+struct MovingChain {
+  static constexpr int kEdges = 7;
+  Eigen::Vector3d axes[kEdges] = {kX, kY, kZ, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}, {1, 1, 1}};
+
+  MovingChain(BufferCore& buffer, const int (&first)[kEdges]) {
+    for (int edge = 0; edge < kEdges; ++edge) {
+      for (int i = first[edge]; i <= 10; ++i) {
+        const double t = i;
+        put(buffer, name(edge), name(edge + 1), at(t), poseAt(edge, t));
+      }
+    }
+  }
+  static std::string name(int link) { return "link_" + std::to_string(link); }
+  Transform poseAt(int edge, double t) const {
+    return pose({0, 0.01 * (edge + 1) * t, 0}, 0.1 * (edge + 1) * t, axes[edge]);
+  }
+  // link_from's pose in link_to (to < from), each edge at time t.
+  Eigen::Isometry3d expected(int to, int from, double t) const {
+    Eigen::Isometry3d product = Eigen::Isometry3d::Identity();
+    for (int edge = to; edge < from; ++edge) {
+      product = product * isometry({0, 0.01 * (edge + 1) * t, 0}, 0.1 * (edge + 1) * t, axes[edge]);
+    }
+    return product;
+  }
+};
+
+TEST(BufferCoreLookup, PathsOfFewAndOfManyDynamicEdgesInterpolateEveryEdge) {
+  BufferCore buffer;
+  const MovingChain chain(buffer, {0, 0, 0, 0, 0, 0, 0});
+  const std::pair<int, int> pairs[] = {{0, 7}, {0, 2}, {3, 7}, {1, 6}, {6, 7}};
+  for (const auto& [to, from] : pairs) {
+    for (double t = 0.0; t <= 10.0; t += 0.73) {
+      const Eigen::Isometry3d expected = chain.expected(to, from, t);
+      EXPECT_TRUE(near(
+          buffer.lookupTransform(MovingChain::name(to), MovingChain::name(from), at(t)).transform,
+          expected, 1e-11))
+          << to << " <- " << from << " at " << t;
+      EXPECT_TRUE(near(
+          buffer.lookupTransform(MovingChain::name(from), MovingChain::name(to), at(t)).transform,
+          expected.inverse(), 1e-11))
+          << from << " <- " << to << " at " << t;
+    }
+  }
+}
+
+TEST(BufferCoreLookup, AnEdgeWithoutDataAtTheTimeFailsPathsOfFewAndOfManyEdges) {
+  // link_4 -> link_5 starts at 3 s; every other edge at 0 s.
+  BufferCore buffer;
+  const MovingChain chain(buffer, {0, 0, 0, 0, 3, 0, 0});
+  for (const auto& [to, from] : {std::pair{0, 7}, std::pair{3, 6}, std::pair{4, 5}}) {
+    for (const auto& [target, source] : {std::pair{to, from}, std::pair{from, to}}) {
+      EXPECT_THROW(
+          buffer.lookupTransform(MovingChain::name(target), MovingChain::name(source), at(2.5)),
+          ExtrapolationException)
+          << target << " <- " << source;
+      EXPECT_TRUE(
+          buffer.canTransform(MovingChain::name(target), MovingChain::name(source), at(3.5)))
+          << target << " <- " << source;
+    }
+    EXPECT_TRUE(near(
+        buffer.lookupTransform(MovingChain::name(to), MovingChain::name(from), at(3.5)).transform,
+        chain.expected(to, from, 3.5), 1e-11));
+  }
+  // A path that leaves the late edge out has data from 0 s.
+  EXPECT_TRUE(near(buffer.lookupTransform("link_0", "link_4", at(2.5)).transform,
+                   chain.expected(0, 4, 2.5), 1e-11));
+}
+
 TEST(BufferCoreLookup, BracketingSamplesWithDifferentParentsUseTheOlderSampleUnchanged) {
   BufferCore buffer;
   putStatic(buffer, "world", "table", pose({2, 0, 0.8}, 0, kZ));
