@@ -15,6 +15,7 @@
 #include "frame_record.hpp"
 #include "lcmtf/buffer_core.hpp"
 #include "lcmtf/frame_name.hpp"
+#include "lookup_mode.hpp"
 #include "name_arena.hpp"
 #include "quick_path.hpp"
 #include "read_mostly_lock.hpp"
@@ -157,10 +158,13 @@ class BufferCore::Impl {
   [[gnu::noinline]] bool quickLookupInto(FrameId target, FrameId source, std::int64_t& stamp,
                                          Transform& value) const;
   /// quickLookup() in two halves, for callers with work to do while the samples load: the
-  /// plan, whose `at` is the stamp of the answer, with the loads of its samples started, then
-  /// its value.
+  /// plan, whose `at` is the stamp of the answer, with its samples taken and their loads
+  /// started, then its value.
   bool planQuickLookup(FrameId target, FrameId source, std::int64_t stamp,
                        detail::QuickPath& path) const;
+  /// Whether lookups may take the root paths: they are on (lookup_mode.hpp), and no gap
+  /// between samples is refused, which only the walk checks.
+  bool quickLookupsApply() const { return detail::quickLookupsEnabled() && max_gap_ == 0; }
   /// The plan of a quick lookup into `path`, starting the loads of its samples when `prefetch`,
   /// and sampling at the latest common time into `sampling` (the QuickPath that `path` is)
   /// unless null; false when quick lookups are off or cannot answer.

@@ -389,7 +389,7 @@ bool BufferCore::Impl::planQuickLookup(FrameId target, FrameId source, std::int6
   RootPaths::Path up_from_source;
   RootPaths::Path up_from_target;
   MeetingPoint meeting;
-  return detail::quickLookupsEnabled() && max_gap_ == 0 &&
+  return quickLookupsApply() &&
          findMeeting(root_paths_, frames_, target, source, up_from_source, up_from_target,
                      meeting) &&
          sampleAt(up_from_source, up_from_target, meeting, stamp, parent_changing_edges_ != 0,
@@ -398,9 +398,8 @@ bool BufferCore::Impl::planQuickLookup(FrameId target, FrameId source, std::int6
 
 bool BufferCore::Impl::planQuickly(FrameId target, FrameId source, std::int64_t stamp,
                                    bool prefetch, QuickPlan& path, QuickPath* sampling) const {
-  return detail::quickLookupsEnabled() && max_gap_ == 0 &&
-         planPath(root_paths_, frames_, target, source, stamp, prefetch,
-                  parent_changing_edges_ != 0, path, sampling);
+  return quickLookupsApply() && planPath(root_paths_, frames_, target, source, stamp, prefetch,
+                                         parent_changing_edges_ != 0, path, sampling);
 }
 
 Transform BufferCore::Impl::quickValue(FrameId target, FrameId source, std::int64_t stamp,

@@ -313,9 +313,8 @@ inline std::size_t TimeCache::guessIndex(std::int64_t stamp) const {
 }
 
 inline std::size_t TimeCache::prefetch(std::int64_t stamp) const {
-  if (count_ < 2) return kNoHint;
-  const std::size_t guess = guessIndex(stamp);
-  prefetchSpan(guess);
+  const std::size_t guess = hintAt(stamp);
+  if (guess != kNoHint) prefetchSpan(guess);
   return guess;
 }
 
