@@ -49,9 +49,10 @@ TEST(ReadMostlyLockConcurrency, MoreReaderThreadsThanSlotsReadOnlyWholeWrites) {
     }
   });
   // More threads at once than there are slots, so that several count themselves in each, in
-  // waves of threads that end before the next begin.
+  // waves of threads that end before the next begin: the first threads in slots of their own,
+  // which they leave without a read-modify-write, the rest sharing.
   constexpr int kWaves = 4;
-  constexpr int kThreadsPerWave = 40;  // the lock has 16 slots
+  constexpr int kThreadsPerWave = 40;  // the lock has 16 slots of their own, 16 shared
   const int reads_per_thread = lcmtf_test::scaledCount(4000);
   for (int wave = 0; wave < kWaves; ++wave) {
     std::vector<std::thread> readers;

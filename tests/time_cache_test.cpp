@@ -647,6 +647,38 @@ TEST(TimeCache, RatioBetweenTwoSamplesDependsOnTheirStampsAlone) {
   }
 }
 
+// At a steady interval, the guess of where a stamp falls (from the samples a microsecond, kept
+// in fixed point) is the sample at or before it, or at a sample's own stamp the one before that,
+// which spanWithin() takes at once: neither searches. However short the interval, however late
+// the stamps.
+TEST(TimeCache, GuessOfASteadyEdgeIsTheSampleBeforeEachStamp) {
+  constexpr std::size_t kSamples = 300;
+  for (const std::int64_t interval : {1, 2, 3, 1'000, 10'000, 33'333}) {
+    for (const std::int64_t start :
+         {std::int64_t{1'000'000}, std::int64_t{1'764'000'000'000'000}}) {
+      TimeCache cache;
+      for (std::size_t k = 0; k < kSamples; ++k) {
+        cache.insert(sampleAt(start + static_cast<std::int64_t>(k) * interval), kKeepAll);
+      }
+      ASSERT_TRUE(cache.isSteady()) << interval << " us apart";
+      for (std::size_t k = 0; k + 1 < kSamples; ++k) {
+        const std::int64_t sample = start + static_cast<std::int64_t>(k) * interval;
+        for (const std::int64_t past :
+             {std::int64_t{0}, std::int64_t{1}, interval / 2, interval - 1}) {
+          if (past >= interval) continue;
+          const std::size_t guess = cache.prefetch(sample + past);
+          const bool right = past == 0 ? guess == k || guess + 1 == k : guess == k;
+          ASSERT_TRUE(right) << "guessed sample " << guess << " for " << past << " us after sample "
+                             << k << ", " << interval << " us apart, from " << start;
+          SampleSpan expected;
+          ASSERT_EQ(cache.find(sample + past, expected), SampleStatus::kOk);
+          ASSERT_TRUE(sameSpan(cache.spanWithin(sample + past, guess), expected));
+        }
+      }
+    }
+  }
+}
+
 TEST(TimeCache, NewestPairNeedsTwoSamples) {
   TimeCache cache;
   expectNewestPairAgreesWithFind(cache);

@@ -10,7 +10,8 @@ namespace lcmtf::detail {
 /// A reader-writer lock for data read far more often than written. Each reader thread counts
 /// itself in a slot on a cache line of its own, so readers never write memory that other
 /// readers touch and scale with the number of cores; a writer raises a flag (writers take turns
-/// on a mutex), waits until every slot is empty, and has the data to itself.
+/// on a mutex), waits until every slot is empty, and has the data to itself. The first threads
+/// to read have a slot each, which no other thread ever counts itself in; later ones share.
 ///
 /// Whoever must wait spins briefly, then sleeps in the kernel until the other side wakes it:
 /// a real-time thread never spins on a lower-priority one, which could then never run. Writers
@@ -26,7 +27,9 @@ class ReadMostlyLock {
   void unlock();
 
  private:
-  static constexpr std::size_t kSlots = 16;
+  // Slots [0, kOwnSlots) belong to one thread each, the rest are shared.
+  static constexpr std::size_t kOwnSlots = 16;
+  static constexpr std::size_t kSharedSlots = 16;
   struct alignas(64) Slot {
     std::atomic<std::size_t> readers{0};
   };
@@ -51,13 +54,15 @@ class ReadMostlyLock {
   Slot& mySlot() const;
   void enter(Slot& slot) const;
   void leave(Slot& slot) const;
+  bool isOwn(const Slot& slot) const { return &slot < slots_.data() + kOwnSlots; }
+  void wakeSleepingWriter() const;
   void waitWhileWriting() const;
   void waitUntilEmpty(const Slot& slot);
   void takeOwner() const;
   void takeOwnerInKernel() const;
   void releaseOwner() const;
 
-  mutable std::array<Slot, kSlots> slots_;
+  mutable std::array<Slot, kOwnSlots + kSharedSlots> slots_;
   // Read by every reader: on a line of its own, written only when a writer comes and goes.
   alignas(64) std::atomic<std::uint32_t> writing_{0};
   mutable std::atomic<std::uint32_t> writer_sleeping_{0};

@@ -48,17 +48,22 @@ void TimeCache::clearHistory() {
   if (is_static_) {
     oldest_stamp_ = newest_stamp_ = 0;
     oldest_parent_ = newest_parent_ = static_parent_;
-    samples_per_utime_ = 0.0;
+    samples_per_utime_fixed_ = 0;
     return;
   }
   oldest_stamp_ = stampAt(0);
   oldest_parent_ = parentOf(0);
   newest_stamp_ = stampAt(count_ - 1);
   newest_parent_ = parentOf(count_ - 1);
-  samples_per_utime_ =
+  const double samples_per_utime =
       newest_stamp_ > oldest_stamp_
           ? static_cast<double>(count_ - 1) / static_cast<double>(newest_stamp_ - oldest_stamp_)
           : 0.0;
+  constexpr std::uint64_t kFixedOne = std::uint64_t{1} << 63;
+  samples_per_utime_fixed_ = samples_per_utime < 1.0
+                                 ? static_cast<std::uint64_t>(static_cast<std::int64_t>(
+                                       samples_per_utime * static_cast<double>(kFixedOne)))
+                                 : kFixedOne;
   if (hasSingleParent()) single_parent_from_ = oldest_stamp_;
 }
 
