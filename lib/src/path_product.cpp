@@ -20,7 +20,9 @@ namespace {
                                                          std::size_t count) {
   if (count == 0) return widened(Transform::identity());
   WideTransform product = widened(*values[count - 1]);
-  for (std::size_t i = count - 1; i-- > 0;) product = composedWide(product, widened(*values[i]));
+  for (std::size_t i = count - 1; i-- > 0;) {
+    product = composedUnderLastKnown(product, widened(*values[i]));
+  }
   return product;
 }
 
@@ -31,8 +33,8 @@ namespace {
                                             const WideTransform& ancestor_T_target,
                                             Transform& target_T_source) {
   const Four target_R_ancestor = conjugate(ancestor_T_target.rotation);
-  narrowInto(WideTransform{rotatedWide(target_R_ancestor, ancestor_T_source.translation -
-                                                              ancestor_T_target.translation),
+  narrowInto(WideTransform{rotatedByLastKnown(target_R_ancestor, ancestor_T_source.translation -
+                                                                     ancestor_T_target.translation),
                            quaternionProduct(target_R_ancestor, ancestor_T_source.rotation)},
              target_T_source);
 }
