@@ -107,7 +107,8 @@ template <int I>
 /// rotatedWide() for a q known last, as a path's product so far is: (2w^2 - 1) v + 2 (q.v) q +
 /// 2w (q x v), whose terms wait on q side by side, where rotatedWide()'s second cross product
 /// waits on its first. Five instructions more; in the path products, wide's deepest lookups of
-/// buffer_core_bench 4-6 % faster, the other lookups within their spread.
+/// buffer_core_bench 4-6 % faster, the other lookups within their spread. For v with a zero
+/// fourth lane, as a widened() translation has; so has the result.
 [[gnu::always_inline]] inline Four rotatedByLastKnown(Four q, Four v) {
   constexpr FourBits kFirstThree = {-1, -1, -1, 0};
   const Four w = lane<3>(q);
