@@ -203,10 +203,10 @@ void ReadMostlyLock::releaseOwner() const {
 void ReadMostlyLock::lock() {
   takeOwner();
   writing_.store(1, std::memory_order_seq_cst);
-  const std::size_t threads = threads_with_slots.load(std::memory_order_seq_cst);
-  for (std::size_t i = 0; i < std::min(threads, kOwnSlots); ++i) waitUntilEmpty(slots_[i]);
-  const std::size_t shared = threads > kOwnSlots ? std::min(threads - kOwnSlots, kSharedSlots) : 0;
-  for (std::size_t i = 0; i < shared; ++i) waitUntilEmpty(slots_[kOwnSlots + i]);
+  // Threads take slots in order, their own ones first: the slots in use are the first ones.
+  const std::size_t used =
+      std::min(slots_.size(), threads_with_slots.load(std::memory_order_seq_cst));
+  for (std::size_t i = 0; i < used; ++i) waitUntilEmpty(slots_[i]);
 }
 
 void ReadMostlyLock::waitUntilEmpty(const Slot& slot) {

@@ -38,6 +38,12 @@ struct WideTransform {
   Four rotation;
 };
 
+/// `four` with its fourth lane zeroed, bit for bit.
+[[gnu::always_inline]] inline Four firstThree(Four four) {
+  constexpr FourBits kFirstThree = {-1, -1, -1, 0};
+  return reinterpret_cast<Four>(reinterpret_cast<FourBits>(four) & kFirstThree);
+}
+
 /// `transform` in lanes. The translation's fourth lane is zeroed: a stored sample keeps its
 /// stamp in the bytes after the translation, and an integer read as a double is denormal,
 /// which some processors multiply slowly.
@@ -46,9 +52,7 @@ struct WideTransform {
   const auto* bytes = reinterpret_cast<const unsigned char*>(&transform);
   Four translation;
   std::memcpy(&translation, bytes, sizeof translation);
-  constexpr FourBits kFirstThree = {-1, -1, -1, 0};
-  translation = reinterpret_cast<Four>(reinterpret_cast<FourBits>(translation) & kFirstThree);
-  return WideTransform{translation, loadFour(transform.rotation.coeffs().data())};
+  return WideTransform{firstThree(translation), loadFour(transform.rotation.coeffs().data())};
 }
 
 /// Writes `wide` to `out`, leaving the bytes after its translation alone: for a lookup's
@@ -110,10 +114,9 @@ template <int I>
 /// buffer_core_bench 4-6 % faster, the other lookups within their spread. For v with a zero
 /// fourth lane, as a widened() translation has; so has the result.
 [[gnu::always_inline]] inline Four rotatedByLastKnown(Four q, Four v) {
-  constexpr FourBits kFirstThree = {-1, -1, -1, 0};
   const Four w = lane<3>(q);
   const Four twice_w = w + w;
-  const Four twice_vector = reinterpret_cast<Four>(reinterpret_cast<FourBits>(q + q) & kFirstThree);
+  const Four twice_vector = firstThree(q + q);
   const Four along_v = (twice_w * w - 1.0) * v + twice_w * cross(q, v);
   return along_v + lanesSummed(q * v) * twice_vector;
 }
