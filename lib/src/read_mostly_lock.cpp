@@ -228,13 +228,13 @@ bool ReadMostlyLock::biasReaders(std::uint32_t state) const {
 void ReadMostlyLock::leave(Slot& slot) const {
   if (isOwn(slot)) {
     slot.readers.store(slot.readers.load(std::memory_order_relaxed) - 1, std::memory_order_release);
-    if ((state_.load(std::memory_order_relaxed) & kWriting) == 0) return;
+    if (!writerIn(std::memory_order_relaxed)) return;
     // A read-modify-write in the single total order, where a fence would do but the thread
     // sanitizer does not follow fences.
     slot.readers.fetch_add(0, std::memory_order_seq_cst);
   } else {
     slot.readers.fetch_sub(1, std::memory_order_seq_cst);
-    if ((state_.load(std::memory_order_seq_cst) & kWriting) == 0) return;
+    if (!writerIn(std::memory_order_seq_cst)) return;
   }
   wakeSleepingWriter();
 }
@@ -247,10 +247,8 @@ void ReadMostlyLock::wakeSleepingWriter() const {
 }
 
 void ReadMostlyLock::waitWhileWriting() const {
-  if (spinUntil([this] { return (state_.load(std::memory_order_acquire) & kWriting) == 0; })) {
-    return;
-  }
-  while ((state_.load(std::memory_order_seq_cst) & kWriting) != 0) {
+  if (spinUntil([this] { return !writerIn(std::memory_order_acquire); })) return;
+  while (writerIn(std::memory_order_seq_cst)) {
     takeOwner();
     releaseOwner();
   }

@@ -77,6 +77,7 @@ class ReadMostlyLock {
   void enter(Slot& slot) const;
   void leave(Slot& slot) const;
   bool isOwn(const Slot& slot) const { return &slot < slots_.data() + kOwnSlots; }
+  bool writerIn(std::memory_order order) const { return (state_.load(order) & kWriting) != 0; }
   bool enterFast(Slot& slot) const;
   void noteQuietRead(Slot& slot, std::uint32_t state) const;
   bool biasReaders(std::uint32_t state) const;
