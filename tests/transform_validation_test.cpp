@@ -35,6 +35,27 @@ TEST(ValidateTransform, SaysWhatTheBufferWouldRefuseAndWhy) {
   EXPECT_EQ(validateTransform(edge("/odom", "base")), InsertRejection::kCount);
 }
 
+TEST(ValidateTransform, EveryCoordinateThatIsNotFiniteIsRefusedAndHugeOnesAreNot) {
+  const double kNotFinite[] = {std::numeric_limits<double>::infinity(),
+                               -std::numeric_limits<double>::infinity(),
+                               std::numeric_limits<double>::quiet_NaN()};
+  for (int coordinate = 0; coordinate < 7; ++coordinate) {
+    for (const double bad : kNotFinite) {
+      TransformStamped transform = edge("odom", "base");
+      double& value = coordinate < 3 ? transform.transform.translation[coordinate]
+                                     : transform.transform.rotation.coeffs()[coordinate - 3];
+      value = bad;
+      EXPECT_EQ(validateTransform(transform), InsertRejection::kNonFinite)
+          << "coordinate " << coordinate << " = " << bad;
+    }
+  }
+  TransformStamped huge = edge("odom", "base");
+  huge.transform.translation = {std::numeric_limits<double>::max(),
+                                -std::numeric_limits<double>::max(),
+                                std::numeric_limits<double>::max()};
+  EXPECT_EQ(validateTransform(huge), InsertRejection::kCount);
+}
+
 TEST(ValidateTransform, NearlyUnitRotationsAreNormalized) {
   Transform value;
   bool normalized = false;

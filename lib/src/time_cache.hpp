@@ -46,9 +46,9 @@ enum class InsertOutcome {
 /// a - b without overflow: clamped to the int64 range (stamps from the network may be anything).
 inline std::int64_t saturatingSubtract(std::int64_t a, std::int64_t b) {
   using Limits = std::numeric_limits<std::int64_t>;
-  if (b > 0 && a < Limits::min() + b) return Limits::min();
-  if (b < 0 && a > Limits::max() + b) return Limits::max();
-  return a - b;
+  std::int64_t difference;
+  if (__builtin_sub_overflow(a, b, &difference)) return b > 0 ? Limits::min() : Limits::max();
+  return difference;
 }
 
 /// The history of one edge (child frame -> parent) kept in time order in a ring, or a single

@@ -10,17 +10,14 @@ namespace lcmtf {
 
 namespace {
 
-// How far from 1 the norm of a unit quaternion computed in double precision may be.
-constexpr double kUnitNormRounding = 1e-12;
-
 std::string edgeName(const TransformStamped& t) {
   return "'" + t.parent_frame + "' -> '" + t.child_frame + "' at " + toString(t.stamp);
 }
 
 }  // namespace
 
-InsertRejection detail::checkTransform(const TransformStamped& transform, double& rotation_norm,
-                                       std::string& reason) {
+InsertRejection detail::checkTransformFully(const TransformStamped& transform,
+                                            double& rotation_norm, std::string& reason) {
   const std::string_view parent = canonicalFrameName(transform.parent_frame);
   const std::string_view child = canonicalFrameName(transform.child_frame);
   const Transform& value = transform.transform;
