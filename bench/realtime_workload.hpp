@@ -54,12 +54,11 @@ inline std::vector<lcmtf::TransformStamped> batchAt(std::int64_t millisecond) {
   batch.reserve(kFrames - 1);
   const double t = static_cast<double>(millisecond) * 1e-3;
   for (int child = 1; child < kFrames; ++child) {
-    lcmtf::Transform value(Eigen::Vector3d(0.1 * child, std::sin(t + child), 0.5),
-                           Eigen::Quaterniond(Eigen::AngleAxisd(0.01 * t * child,
-                                                                Eigen::Vector3d::UnitZ())));
+    lcmtf::Transform value(
+        Eigen::Vector3d(0.1 * child, std::sin(t + child), 0.5),
+        Eigen::Quaterniond(Eigen::AngleAxisd(0.01 * t * child, Eigen::Vector3d::UnitZ())));
     batch.push_back(lcmtf::TransformStamped{lcmtf::fromUtime(10'000'000 + millisecond * 1000),
-                                            frameName((child - 1) / 2), frameName(child),
-                                            value});
+                                            frameName((child - 1) / 2), frameName(child), value});
   }
   return batch;
 }
@@ -86,7 +85,8 @@ inline std::string placeThread(int cpu, bool realtime) {
 
 /// Runs the set-up for `duration` with `realtime` under SCHED_FIFO, both threads on the core
 /// the caller runs on.
-inline RealtimeResult runRealtimeWorkload(RealtimeThread realtime, std::chrono::milliseconds duration) {
+inline RealtimeResult runRealtimeWorkload(RealtimeThread realtime,
+                                          std::chrono::milliseconds duration) {
   using namespace realtime_detail;
   RealtimeResult result;
   // A receiver that has been running for a while: every edge holds its full history.
@@ -144,8 +144,8 @@ inline RealtimeResult runRealtimeWorkload(RealtimeThread realtime, std::chrono::
       while (Clock::now() < busy_until) {
         const Clock::time_point before = Clock::now();
         try {
-          buffer.lookupTransform(handles[frame(random)], handles[frame(random)],
-                                 lcmtf::kLatestTime, out);
+          buffer.lookupTransform(handles[frame(random)], handles[frame(random)], lcmtf::kLatestTime,
+                                 out);
         } catch (const lcmtf::TransformException&) {
         }
         const Clock::time_point after = Clock::now();

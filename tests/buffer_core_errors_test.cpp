@@ -413,8 +413,8 @@ TEST_F(BufferCoreErrors, CanTransformSucceedsWhereTheLookupSucceeds) {
 }
 
 TEST_F(BufferCoreErrors, AFrameInItselfIsTheIdentityWhetherOrNotItIsKnownButNoNameIsNoFrame) {
-  for (const auto& [target, source] : {std::pair<std::string, std::string>{"hand", "/hand"},
-                                       {"/ghost", "ghost"}}) {
+  for (const auto& [target, source] :
+       {std::pair<std::string, std::string>{"hand", "/hand"}, {"/ghost", "ghost"}}) {
     EXPECT_TRUE(buffer_.canTransform(target, source, at(2))) << target << " " << source;
     const TransformStamped t = buffer_.lookupTransform(target, source, at(2));
     EXPECT_TRUE(t.transform.isApprox(Transform::identity(), 0.0)) << target << " " << source;

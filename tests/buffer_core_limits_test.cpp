@@ -50,8 +50,7 @@ TEST(BufferCoreSampleBound, ALateSampleInsideAFullEdgeTakesTheOldestOnesPlace) {
   put(buffer, "map", "robot", at(4), along(4));
   put(buffer, "map", "robot", at(2), along(2));
   EXPECT_FALSE(buffer.canTransform("map", "robot", at(1.5)));
-  EXPECT_NEAR(buffer.lookupTransform("map", "robot", at(2.5)).transform.translation.x(), 2.5,
-              1e-9);
+  EXPECT_NEAR(buffer.lookupTransform("map", "robot", at(2.5)).transform.translation.x(), 2.5, 1e-9);
 }
 
 TEST(BufferCoreSampleBound, ASampleOlderThanAllOfAFullEdgeIsRefusedCountedAndNamed) {
@@ -61,16 +60,15 @@ TEST(BufferCoreSampleBound, ASampleOlderThanAllOfAFullEdgeIsRefusedCountedAndNam
   put(buffer, "map", "robot", at(2), along(2));
   put(buffer, "map", "robot", at(3), along(3));
   std::string error;
-  EXPECT_FALSE(buffer.setTransform(
-      TransformStamped{at(1), "map", "robot", along(1)}, "late", false, &error));
+  EXPECT_FALSE(buffer.setTransform(TransformStamped{at(1), "map", "robot", along(1)}, "late", false,
+                                   &error));
   EXPECT_THAT(error, HasSubstr("'map' -> 'robot'"));
   EXPECT_THAT(error, HasSubstr("most samples (2)"));
   EXPECT_EQ(refusedAsFull(buffer), 1u);
-  EXPECT_FALSE(buffer.setTransform(
-      TransformStamped{at(1), "elsewhere", "robot", along(1)}, "late", false, &error));
+  EXPECT_FALSE(buffer.setTransform(TransformStamped{at(1), "elsewhere", "robot", along(1)}, "late",
+                                   false, &error));
   EXPECT_FALSE(buffer.frameExists("elsewhere"));
-  EXPECT_NEAR(buffer.lookupTransform("map", "robot", at(2.5)).transform.translation.x(), 2.5,
-              1e-9);
+  EXPECT_NEAR(buffer.lookupTransform("map", "robot", at(2.5)).transform.translation.x(), 2.5, 1e-9);
 }
 
 TEST(BufferCoreSampleBound, AFloodAtAnyRateKeepsAtMostTheBoundPerEdge) {
@@ -132,9 +130,9 @@ TEST_F(BufferCoreInterpolationGap, LookupsBetweenCloseSamplesOrAtASampleStillAns
               1e-9);
   EXPECT_NEAR(buffer_.lookupTransform("map", "base", kLatestTime).transform.translation.x(), 22.0,
               1e-9);
-  EXPECT_NEAR(buffer_.lookupTransform("base", at(2.15), "base", at(0.05), "map")
-                  .transform.translation.x(),
-              -21.0, 1e-9);
+  EXPECT_NEAR(
+      buffer_.lookupTransform("base", at(2.15), "base", at(0.05), "map").transform.translation.x(),
+      -21.0, 1e-9);
 }
 
 TEST_F(BufferCoreInterpolationGap, ALimitAsWideAsTheGapAllowsIt) {

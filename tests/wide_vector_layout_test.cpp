@@ -27,18 +27,17 @@ TEST(WideVectorLayout, PublicStructsHaveTheSameLayoutWithAndWithoutAvx) {
   EXPECT_EQ(wide.stamped_alignment, alignof(TransformStamped));
   EXPECT_EQ(wide.stamped_transform_offset, offsetof(TransformStamped, transform));
   EXPECT_EQ(wide.pose_with_covariance_size, sizeof(PoseWithCovariance));
-  EXPECT_EQ(wide.pose_with_covariance_covariance_offset,
-            offsetof(PoseWithCovariance, covariance));
+  EXPECT_EQ(wide.pose_with_covariance_covariance_offset, offsetof(PoseWithCovariance, covariance));
 }
 
 TEST(WideVectorLayout, TransformsSetAndLookedUpFromAvxCodeKeepTheirValues) {
   if (!processorHasWideVectors()) GTEST_SKIP() << "this processor has no AVX2 and FMA";
   const TransformStamped result = lookupWithWideVectors();
   // map_T_odom at 0.25 s: a quarter of the way in translation and in angle about z.
-  const Transform map_T_odom(
-      {1.5, 0, 0}, Eigen::Quaterniond(Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitZ())));
-  const Transform odom_T_base(
-      {0, 0, 0.5}, Eigen::Quaterniond(Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitX())));
+  const Transform map_T_odom({1.5, 0, 0},
+                             Eigen::Quaterniond(Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitZ())));
+  const Transform odom_T_base({0, 0, 0.5},
+                              Eigen::Quaterniond(Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitX())));
   EXPECT_EQ(result.parent_frame, "map");
   EXPECT_EQ(result.child_frame, "base_link");
   EXPECT_EQ(toUtime(result.stamp), 250'000);

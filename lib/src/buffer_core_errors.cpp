@@ -53,8 +53,7 @@ std::string BufferCore::Impl::describe(const LookupFailure& failure,
              " has samples at " + toString(fromUtime(failure.oldest)) + " and " +
              toString(fromUtime(failure.newest)) + ", " +
              toString(Duration(detail::saturatingSubtract(failure.newest, failure.oldest))) +
-             " apart, more than the maximum interpolation gap of " +
-             toString(Duration(max_gap_));
+             " apart, more than the maximum interpolation gap of " + toString(Duration(max_gap_));
   }
   return what;
 }

@@ -148,7 +148,8 @@ TEST(DemoScript, RunsThePublishersAndListenerForItsDurationThenStopsThemAll) {
   EXPECT_THAT(output, HasSubstr("what the camera saw 2.0 s ago"));
   EXPECT_THAT(output, HasSubstr("lcmtf-urdf-publisher: stopped after "));
   EXPECT_THAT(output, HasSubstr("lcmtf-joint-publisher: stopped after "));
-  EXPECT_THAT(output, testing::ContainsRegex("lcmtf-viewer: open http://127\\.0\\.0\\.1:[0-9]+/ in a browser"));
+  EXPECT_THAT(output, testing::ContainsRegex(
+                          "lcmtf-viewer: open http://127\\.0\\.0\\.1:[0-9]+/ in a browser"));
   EXPECT_THAT(output, HasSubstr("lcmtf-viewer: served "));
   EXPECT_THAT(processesMentioning(url), testing::IsEmpty());
 }

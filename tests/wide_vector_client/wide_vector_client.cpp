@@ -24,13 +24,15 @@ Layout layoutSeenWithWideVectors() {
 
 TransformStamped lookupWithWideVectors() {
   BufferCore buffer;
-  const auto at = [](double seconds) { return fromUtime(static_cast<std::int64_t>(seconds * 1e6)); };
+  const auto at = [](double seconds) {
+    return fromUtime(static_cast<std::int64_t>(seconds * 1e6));
+  };
   TransformStamped moving{at(0), "map", "odom",
                           Transform({1, 0, 0}, Eigen::Quaterniond::Identity())};
   buffer.setTransform(moving, "wide_vector_client");
   moving.stamp = at(1);
-  moving.transform = Transform(
-      {3, 0, 0}, Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ())));
+  moving.transform =
+      Transform({3, 0, 0}, Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ())));
   buffer.setTransform(moving, "wide_vector_client");
   const TransformStamped mount{
       at(0), "odom", "base_link",

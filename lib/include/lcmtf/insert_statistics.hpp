@@ -26,7 +26,7 @@ struct InsertStatistics {
   std::uint64_t replaced = 0;             ///< a repeated stamp that replaced its sample
   std::uint64_t normalized = 0;           ///< quaternions normalized on the way in
   std::uint64_t authority_conflicts = 0;  ///< an edge set by another authority than before
-  std::uint64_t dropped_for_room = 0;  ///< oldest samples dropped early: the edge held its most
+  std::uint64_t dropped_for_room = 0;     ///< oldest samples dropped early: the edge held its most
   std::array<std::uint64_t, static_cast<std::size_t>(InsertRejection::kCount)> rejected{};
 
   std::uint64_t rejectedCount(InsertRejection kind) const {
