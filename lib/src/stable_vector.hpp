@@ -28,18 +28,16 @@ class StableVector {
 
   template <class... Args>
   T& emplace_back(Args&&... args) {
-    const Place place = placeOf(size_);
-    if (place.chunk == chunks_.size()) {
+    const std::size_t top = topBitOf(size_);
+    if (top - kFirstChunkBits == chunks_.size()) {
       // Storage left uninitialized: each element is constructed as it is added.
       chunks_.reserve(chunks_.size() + 1);
-      Storage* const chunk = allocator().allocate(kFirstChunk << place.chunk);
+      Storage* const chunk = allocator().allocate(kFirstChunk << chunks_.size());
       chunks_.push_back(chunk);
-      origins_[place.chunk + kFirstChunkBits] =
-          reinterpret_cast<std::uintptr_t>(chunk) -
-          (size_ * sizeof(Storage));  // wraps around for the elements before the chunk
+      origins_[top] = reinterpret_cast<std::uintptr_t>(chunk) -
+                      (size_ * sizeof(Storage));  // wraps around for the elements before the chunk
     }
-    T* element = ::new (static_cast<void*>(&chunks_[place.chunk][place.offset]))
-        T(std::forward<Args>(args)...);
+    T* element = ::new (addressOf(size_)) T(std::forward<Args>(args)...);
     ++size_;
     return *element;
   }
@@ -87,27 +85,21 @@ class StableVector {
     unsigned char bytes[sizeof(T)];
   };
   static LargeArrayAllocator<Storage> allocator() { return {}; }
-  struct Place {
-    std::size_t chunk;
-    std::size_t offset;
-  };
-
-  // Chunk c holds the elements from kFirstChunk * (2^c - 1) on.
-  static Place placeOf(std::size_t index) {
-    const std::size_t shifted = index + kFirstChunk;
-    const auto top = static_cast<std::size_t>(63 - __builtin_clzll(shifted));
-    const std::size_t chunk = top - kFirstChunkBits;
-    return Place{chunk, shifted - (std::size_t{1} << top)};
-  }
   static constexpr std::size_t kFirstChunkBits = __builtin_ctzll(kFirstChunk);
+
+  // Chunk c holds the elements from kFirstChunk * (2^c - 1) on: those whose index +
+  // kFirstChunk has its highest bit at c + kFirstChunkBits.
+  static std::size_t topBitOf(std::size_t index) {
+    return static_cast<std::size_t>(63 - __builtin_clzll(index + kFirstChunk));
+  }
 
   // An element's address is its chunk's origin plus its index times the size of one: one load
   // where the chunk's start and the offset in it took two loads and a few more instructions
   // (14 of an insert's 888 on deep_chain in buffer_core_bench).
-  T& at(std::size_t index) const {
-    const auto top = static_cast<std::size_t>(63 - __builtin_clzll(index + kFirstChunk));
-    return *std::launder(reinterpret_cast<T*>(origins_[top] + index * sizeof(Storage)));
+  void* addressOf(std::size_t index) const {
+    return reinterpret_cast<void*>(origins_[topBitOf(index)] + index * sizeof(Storage));
   }
+  T& at(std::size_t index) const { return *std::launder(static_cast<T*>(addressOf(index))); }
 
   std::vector<Storage*> chunks_;
   // Indexed by the highest bit set in index + kFirstChunk, the same for all of one chunk's

@@ -14,6 +14,11 @@ namespace lcmtf::detail {
 /// precision may be.
 constexpr double kUnitNormRounding = 1e-12;
 
+/// Whether a rotation of `squared_norm` is unit to rounding: stored as given, and finite.
+inline bool unitToRounding(double squared_norm) {
+  return std::abs(squared_norm - 1.0) <= kUnitNormRounding;
+}
+
 /// Whether `transform` passes every check with its rotation unit to rounding, found with few
 /// instructions and branches: a rotation that close to unit is finite, and a translation is
 /// finite when each coordinate times zero is zero (infinity or NaN times zero is NaN). Inline,
@@ -24,11 +29,10 @@ inline bool isPlainlyValid(const TransformStamped& transform) {
   const std::string_view parent = canonicalFrameName(transform.parent_frame);
   const std::string_view child = canonicalFrameName(transform.child_frame);
   const Transform& value = transform.transform;
-  const double squared_norm = value.rotation.squaredNorm();
   const Eigen::Vector3d& t = value.translation;
   const double zero_if_finite = t.x() * 0.0 + t.y() * 0.0 + t.z() * 0.0;
-  return std::abs(squared_norm - 1.0) <= kUnitNormRounding && zero_if_finite == 0.0 &&
-         !parent.empty() && !child.empty() && !sameName(parent, child);
+  return unitToRounding(value.rotation.squaredNorm()) && zero_if_finite == 0.0 && !parent.empty() &&
+         !child.empty() && !sameName(parent, child);
 }
 
 /// checkTransform() for a transform that is not plainly valid: why it is refused, or how much

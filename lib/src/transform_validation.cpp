@@ -24,7 +24,7 @@ InsertRejection detail::checkTransformFully(const TransformStamped& transform,
   rotation_norm = 1.0;
   // Most rotations are unit to a few ulps, and then their norm is not needed.
   const double squared_norm = value.rotation.squaredNorm();
-  const bool plainly_unit = std::abs(squared_norm - 1.0) <= kUnitNormRounding;
+  const bool plainly_unit = unitToRounding(squared_norm);
   const double norm = plainly_unit ? 1.0 : std::sqrt(squared_norm);
   if (parent.empty() || child.empty()) {
     reason = "empty " + std::string(child.empty() ? "child" : "parent") + " frame name in " +
